@@ -1,0 +1,20 @@
+// Placeholder registration, replaced by the module's owner as the feature lands.
+#include <spdlog/spdlog.h>
+
+#include "apps/dynanav/commands.hpp"
+#include "core/error.hpp"
+
+namespace dynanav::cli {
+
+void registerRun(CLI::App& root, Action& chosen) {
+  auto* sub = root.add_subcommand("run", "(not built yet)");
+  sub->allow_extras();
+  sub->callback([&chosen] {
+    chosen = [] {
+      spdlog::error("'run' is not built yet");
+      return kExitBadInput;
+    };
+  });
+}
+
+}  // namespace dynanav::cli

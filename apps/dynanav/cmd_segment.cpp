@@ -1,0 +1,20 @@
+// Placeholder registration, replaced by the module's owner as the feature lands.
+#include <spdlog/spdlog.h>
+
+#include "apps/dynanav/commands.hpp"
+#include "core/error.hpp"
+
+namespace dynanav::cli {
+
+void registerSegment(CLI::App& root, Action& chosen) {
+  auto* sub = root.add_subcommand("segment", "(not built yet)");
+  sub->allow_extras();
+  sub->callback([&chosen] {
+    chosen = [] {
+      spdlog::error("'segment' is not built yet");
+      return kExitBadInput;
+    };
+  });
+}
+
+}  // namespace dynanav::cli

@@ -1,0 +1,26 @@
+#pragma once
+// Shared test helpers: locating ../shared, scratch folders, running the CLI.
+#include <filesystem>
+#include <string>
+
+namespace dynanav::test {
+
+/// ../shared (or $DYNANAV_SHARED); empty path if it does not exist.
+std::filesystem::path sharedDir();
+/// A sequence folder under ../shared/data, or empty if absent.
+std::filesystem::path sharedSequence(const std::string& name);
+/// ../shared/models (or $DYNANAV_MODELS), or empty if absent.
+std::filesystem::path sharedModels();
+/// A fresh empty folder under the system temp dir, unique per test.
+std::filesystem::path scratchDir(const std::string& tag);
+/// Runs `<build>/bin/dynanav ARGS`, capturing stdout+stderr into `output`; returns the exit code.
+int runCli(const std::string& args, std::string* output = nullptr);
+/// Whole file as a string ("" if missing).
+std::string readFile(const std::filesystem::path& path);
+
+}  // namespace dynanav::test
+
+/// Skip the current test with a message when a shared sequence is absent.
+#define DYNANAV_REQUIRE_SEQUENCE(var, name)                                              \
+  const auto var = ::dynanav::test::sharedSequence(name);                                \
+  if (var.empty()) GTEST_SKIP() << "../shared/data/" << name << " not found: skipped"
