@@ -1,0 +1,23 @@
+#pragma once
+// Config section `run` (see core/config.hpp for how sections are loaded and echoed).
+// To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+#include <string>
+#include <vector>
+
+namespace dynanav {
+
+/// Whole-run behaviour (what the CLI flags override).
+struct RunConfig {
+  bool dynamic = true;
+  bool deterministic = true;
+  std::string segmenter = "auto";
+  int segment_every = 1;
+  template <class V> void visit(V&& v) {
+    v("dynamic", dynamic, "handle moving objects (false = plain ORB-SLAM2-style baseline)");
+    v("deterministic", deterministic, "single thread, identical results run to run");
+    v("segmenter", segmenter, "auto | dnn | hog | masks | none");
+    v("segment_every", segment_every, "run the segmenter every k-th frame, propagate between");
+  }
+};
+
+}  // namespace dynanav
