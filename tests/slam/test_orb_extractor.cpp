@@ -7,26 +7,12 @@
 #include "slam/orb_extractor.hpp"
 #include "slam/orb_orientation.hpp"
 #include "slam/orb_quadtree.hpp"
+#include "test_orb_images.hpp"
 
 namespace dynanav {
 namespace {
 
-// Blobs of random grey levels at several scales: corners everywhere, like a textured wall.
-cv::Mat texturedImage(int width, int height, uint64_t seed) {
-  cv::RNG rng(seed);
-  cv::Mat image(height, width, CV_8UC1, cv::Scalar(128));
-  for (int i = 0; i < 1500; ++i) {
-    const cv::Point c(rng.uniform(0, width), rng.uniform(0, height));
-    const int r = rng.uniform(3, 25);
-    if (rng.uniform(0, 2) == 0)
-      cv::circle(image, c, r, cv::Scalar(rng.uniform(0, 256)), cv::FILLED);
-    else
-      cv::rectangle(image, cv::Rect(c.x, c.y, r, rng.uniform(3, 25)), cv::Scalar(rng.uniform(0, 256)),
-                    cv::FILLED);
-  }
-  cv::GaussianBlur(image, image, cv::Size(3, 3), 0.8);
-  return image;
-}
+using test::texturedImage;
 
 TEST(OrbExtractor, LevelsAndScalesFollowTheConfig) {
   OrbExtractor extractor{OrbConfig{}};
