@@ -1,6 +1,7 @@
 #pragma once
 // Config section `perception` (see core/config.hpp for how sections are loaded and echoed).
 // To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+// Which segmenter runs and how often are run-level choices (RunConfig::segmenter, segment_every).
 #include <string>
 #include <vector>
 
@@ -8,7 +9,67 @@ namespace dynanav {
 
 /// Segmentation and keypoints.
 struct PerceptionConfig {
-  template <class V> void visit(V&& /*v*/) {}
+  std::string models_dir;  // empty = search $DYNANAV_MODELS, then ../shared/models
+  int threads = 2;         // cv::setNumThreads for the DNN and flow stages (0 = OpenCV default)
+
+  // Detector (Yolo-Fastest-1.1-xl, MODELS.md).
+  int detector_input_px = 320;
+  double detector_min_score = 0.3;
+  double detector_nms_iou = 0.45;
+  double person_min_score = 0.35;
+  double min_box_height_px = 24.0;
+  std::vector<std::string> object_classes{"bicycle", "car",      "motorbike", "cat",
+                                          "dog",     "backpack", "umbrella",  "handbag",
+                                          "suitcase", "chair"};
+
+  // Person masks (MediaPipe selfie segmentation on a square crop per box).
+  double selfie_crop_scale = 1.25;
+  double selfie_threshold = 0.5;
+  double selfie_min_box_share = 0.2;
+
+  // Depth refinement and depth-only masks.
+  double depth_band_m = 0.5;
+  double depth_bin_m = 0.05;
+
+  // Keypoints (MoveNet Lightning per person box).
+  bool keypoints = true;
+  double keypoint_crop_scale = 1.15;
+
+  // Propagation between segmented frames (DIS optical flow).
+  double flow_scale = 0.5;
+  double propagation_depth_band_m = 0.6;
+
+  // Noise injection for the `masks` segmenter (robustness tests; all off by default).
+  int mask_noise_grow_px = 0;
+  double mask_noise_drop_share = 0.0;
+  int mask_noise_shift_px = 0;
+  int mask_noise_seed = 1;
+
+  template <class V> void visit(V&& v) {
+    v("models_dir", models_dir, "folder with the model files (empty: $DYNANAV_MODELS, ../shared/models)");
+    v("threads", threads, "OpenCV threads for DNN and flow (cv::setNumThreads; 0 = OpenCV's default)");
+    v("detector_input_px", detector_input_px, "Yolo-Fastest input side (px); 320 as trained");
+    v("detector_min_score", detector_min_score, "detections below this class score are dropped");
+    v("detector_nms_iou", detector_nms_iou, "non-maximum suppression IoU per class");
+    v("person_min_score", person_min_score, "person boxes below this score are not segmented");
+    v("min_box_height_px", min_box_height_px, "boxes lower than this (px) are ignored");
+    v("object_classes", object_classes, "COCO classes besides person that get depth masks");
+    v("selfie_crop_scale", selfie_crop_scale, "square crop side / longer box side for the selfie model");
+    v("selfie_threshold", selfie_threshold, "selfie probability above which a pixel is person");
+    v("selfie_min_box_share", selfie_min_box_share,
+      "a selfie mask covering less of its box than this falls back to the depth mask");
+    v("depth_band_m", depth_band_m, "pixels farther than this from an instance's depth mode are dropped (m)");
+    v("depth_bin_m", depth_bin_m, "histogram bin for the depth mode (m)");
+    v("keypoints", keypoints, "run MoveNet on person boxes (shoulders, hips)");
+    v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet");
+    v("flow_scale", flow_scale, "image scale at which DIS flow is computed for propagation");
+    v("propagation_depth_band_m", propagation_depth_band_m,
+      "propagated pixels farther than this from the instance's depth mode are dropped (m)");
+    v("mask_noise_grow_px", mask_noise_grow_px, "masks segmenter: dilate (>0) or erode (<0) by px");
+    v("mask_noise_drop_share", mask_noise_drop_share, "masks segmenter: share of frames an instance is dropped");
+    v("mask_noise_shift_px", mask_noise_shift_px, "masks segmenter: shift masks by up to px in x and y");
+    v("mask_noise_seed", mask_noise_seed, "masks segmenter: seed of the noise RNG");
+  }
 };
 
 }  // namespace dynanav

@@ -1,0 +1,35 @@
+#pragma once
+// Where the pretrained model files are found (DESIGN.md §2, --models). The files are not in the
+// repository: scripts/fetch_models.sh downloads them; developers use ../shared/models.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dynanav {
+
+/// Model files relative to a models folder (the layout of ../shared/models and fetch_models.sh).
+namespace model_files {
+inline constexpr const char* kDetectorCfg = "yolo-fastest/yolo-fastest-1.1-xl.cfg";
+inline constexpr const char* kDetectorWeights = "yolo-fastest/yolo-fastest-1.1-xl.weights";
+inline constexpr const char* kCocoNames = "yolo-fastest/coco.names";
+inline constexpr const char* kSelfie = "mediapipe-selfie-segmentation/selfie_segmentation_256.pb";
+inline constexpr const char* kMoveNet = "movenet-singlepose-lightning/movenet_singlepose_lightning.pb";
+}  // namespace model_files
+
+/// The folders searched for models, in order: `explicit_dir` (--models or config) if not empty,
+/// $DYNANAV_MODELS, ./models, ../shared/models from the current directory, and ../shared/models
+/// next to the source tree this binary was built from.
+std::vector<std::filesystem::path> modelSearchPath(const std::string& explicit_dir);
+
+/// The first folder of the search path holding all `required` files; empty if none does.
+/// An explicit folder is the only candidate when given (a typo must not silently pick another).
+std::filesystem::path findModelsDir(const std::string& explicit_dir,
+                                    const std::vector<std::string>& required);
+
+/// `dir / relative`, or InputError naming the missing file and how to get it.
+std::filesystem::path requireModelFile(const std::filesystem::path& dir, const std::string& relative);
+
+/// Files the dnn segmenter needs (keypoints add MoveNet).
+std::vector<std::string> dnnModelFiles(bool with_keypoints);
+
+}  // namespace dynanav

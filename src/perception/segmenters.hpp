@@ -1,0 +1,62 @@
+#pragma once
+// The concrete segmenters behind makeSegmenter(); declared here for tests and benchmarks.
+#include <optional>
+#include <opencv2/objdetect.hpp>
+#include <set>
+
+#include "perception/box_models.hpp"
+#include "perception/detector.hpp"
+#include "perception/segmenter.hpp"
+
+namespace dynanav {
+
+/// One object before painting: its record and its mask (CV_8U, the size of record.box).
+struct MaskedObject {
+  Instance record;
+  cv::Mat mask_in_box;
+};
+
+/// Paints objects into one label image, far ones first so that nearer objects occlude them
+/// (depth order from each mask's depth mode; objects without depth go first). Ids 1..N in
+/// input order; objects whose mask is empty are dropped.
+Instances paintObjects(std::vector<MaskedObject> objects, const cv::Mat& depth_m, cv::Size size,
+                       double bin_m);
+
+class DnnSegmenter final : public Segmenter {
+ public:
+  DnnSegmenter(const std::filesystem::path& models_dir, const PerceptionConfig& config);
+  Instances segment(const RgbdFrame& frame) override;
+  [[nodiscard]] std::string name() const override { return "dnn"; }
+  [[nodiscard]] std::map<std::string, double> lastTiming() const override { return timing_; }
+
+ private:
+  cv::Mat personMask(const RgbdFrame& frame, const cv::Rect& box, std::string& source);
+
+  PerceptionConfig config_;
+  YoloDetector detector_;
+  SelfieSegmenter selfie_;
+  std::optional<KeypointDetector> keypoints_;
+  std::set<std::string> object_classes_;
+  std::map<std::string, double> timing_;
+};
+
+class HogSegmenter final : public Segmenter {
+ public:
+  explicit HogSegmenter(const PerceptionConfig& config);
+  Instances segment(const RgbdFrame& frame) override;
+  [[nodiscard]] std::string name() const override { return "hog"; }
+  [[nodiscard]] std::map<std::string, double> lastTiming() const override { return timing_; }
+
+ private:
+  PerceptionConfig config_;
+  cv::HOGDescriptor hog_;
+  std::map<std::string, double> timing_;
+};
+
+class NoneSegmenter final : public Segmenter {
+ public:
+  Instances segment(const RgbdFrame& frame) override { return Instances::none(frame.bgr.size()); }
+  [[nodiscard]] std::string name() const override { return "none"; }
+};
+
+}  // namespace dynanav
