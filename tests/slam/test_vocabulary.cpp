@@ -92,7 +92,9 @@ TEST_F(VocabularyTest, BowVectorIsNormalisedAndScoresLikeL1) {
   double sum = 0.0;
   for (size_t i = 0; i < a.size(); ++i) {
     sum += a.entries[i].second;
-    if (i > 0) ASSERT_LT(a.entries[i - 1].first, a.entries[i].first);
+    if (i > 0) {
+      ASSERT_LT(a.entries[i - 1].first, a.entries[i].first);
+    }
   }
   EXPECT_NEAR(sum, 1.0, 1e-5);
   EXPECT_NEAR(l1Score(a, a), 1.0, 1e-5);
@@ -107,7 +109,9 @@ TEST_F(VocabularyTest, BowVectorIsNormalisedAndScoresLikeL1) {
   // Direct index: every feature exactly once, under nodes at depth <= 2, node ids ascending.
   std::vector<int> seen;
   for (size_t i = 0; i < fa.nodes.size(); ++i) {
-    if (i > 0) ASSERT_LT(fa.nodes[i - 1].first, fa.nodes[i].first);
+    if (i > 0) {
+      ASSERT_LT(fa.nodes[i - 1].first, fa.nodes[i].first);
+    }
     seen.insert(seen.end(), fa.nodes[i].second.begin(), fa.nodes[i].second.end());
   }
   std::sort(seen.begin(), seen.end());
