@@ -8,7 +8,32 @@ namespace dynanav {
 
 /// Dynamic-object handling (paper's values as defaults).
 struct DynamicsConfig {
-  template <class V> void visit(V&& /*v*/) {}
+  std::vector<std::string> prior_dynamic_classes = {"person", "dog", "cat", "horse", "bird"};
+  double depth_diff_min_m = 0.10;
+  double depth_diff_per_z2 = 0.02;
+  double instance_dynamic_share = 0.30;
+  int instance_min_points = 5;
+  double scene_flow_point_m = 0.02;
+  double scene_flow_share = 0.30;
+  int scene_flow_min_points = 10;
+  int sample_step_px = 5;
+  template <class V> void visit(V&& v) {
+    v("prior_dynamic_classes", prior_dynamic_classes,
+      "classes that may move: their keypoints never enter the initial pose estimate or the map");
+    v("depth_diff_min_m", depth_diff_min_m,
+      "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint");
+    v("depth_diff_per_z2", depth_diff_per_z2,
+      "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with z^2)");
+    v("instance_dynamic_share", instance_dynamic_share,
+      "an instance moves when this share of its checked keypoints fails the depth test");
+    v("instance_min_points", instance_min_points, "fewest checked keypoints for an instance verdict");
+    v("scene_flow_point_m", scene_flow_point_m,
+      "scene flow: a point moves if it moved more than this (m) between frames after ego-motion (paper: 0.02)");
+    v("scene_flow_share", scene_flow_share,
+      "scene flow: an object is dynamic when more than this share of its points moves (paper: 30 %)");
+    v("scene_flow_min_points", scene_flow_min_points, "fewest tracked points for a scene-flow verdict");
+    v("sample_step_px", sample_step_px, "object points are sampled every this many pixels in the mask");
+  }
 };
 
 }  // namespace dynanav

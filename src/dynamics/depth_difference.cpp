@@ -1,0 +1,51 @@
+#include "dynamics/depth_difference.hpp"
+
+#include <cmath>
+
+namespace dynanav {
+
+double depthDifferenceThreshold(double depth_m, const DynamicsConfig& config) {
+  return config.depth_diff_min_m + config.depth_diff_per_z2 * depth_m * depth_m;
+}
+
+bool failsDepthTest(const DepthCheck& check, const DynamicsConfig& config) {
+  if (!(check.measured_depth_m > 0.f) || !(check.predicted_depth_m > 0.f)) return false;
+  const double diff = std::abs(double(check.measured_depth_m) - double(check.predicted_depth_m));
+  return diff > depthDifferenceThreshold(check.predicted_depth_m, config);
+}
+
+DepthDifferenceResult classifyByDepthDifference(const std::vector<DepthCheck>& checks,
+                                                const DynamicsConfig& config) {
+  DepthDifferenceResult result;
+  result.keypoint_dynamic.assign(checks.size(), false);
+  std::vector<bool> testable(checks.size(), false);
+  for (size_t i = 0; i < checks.size(); ++i) {
+    const DepthCheck& c = checks[i];
+    testable[i] = c.measured_depth_m > 0.f && c.predicted_depth_m > 0.f;
+    if (!testable[i]) continue;
+    ++result.checked;
+    const bool fails = failsDepthTest(c, config);
+    result.keypoint_dynamic[i] = fails;
+    if (c.instance != 0) {
+      InstanceMotionVote& vote = result.instances[c.instance];
+      ++vote.checked;
+      vote.failing += fails ? 1 : 0;
+    }
+  }
+  for (auto& [id, vote] : result.instances) {
+    vote.dynamic = vote.checked >= config.instance_min_points &&
+                   double(vote.failing) >= config.instance_dynamic_share * double(vote.checked);
+  }
+  // The instance decides for all its keypoints, including those the test could not check
+  // (no depth, no map point yet): a moving box's new points must not enter the map either.
+  for (size_t i = 0; i < checks.size(); ++i) {
+    const auto it = result.instances.find(checks[i].instance);
+    if (checks[i].instance != 0 && it != result.instances.end()) {
+      result.keypoint_dynamic[i] = it->second.dynamic;
+    }
+    result.dynamic += result.keypoint_dynamic[i] ? 1 : 0;
+  }
+  return result;
+}
+
+}  // namespace dynanav

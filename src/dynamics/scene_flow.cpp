@@ -1,0 +1,70 @@
+#include "dynamics/scene_flow.hpp"
+
+#include <cmath>
+
+#include "core/frame.hpp"
+
+namespace dynanav {
+
+SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
+                                  const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
+                                  const DynamicsConfig& config) {
+  SceneFlowVerdict v;
+  const size_t n = std::min(p_prev_camera.size(), p_cur_camera.size());
+  double sum = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    // Where the point would be now had it not moved, vs. where it is.
+    const double flow_m = (p_cur_camera[i] - T_cur_prev * p_prev_camera[i]).norm();
+    sum += flow_m;
+    ++v.points;
+    v.moving += flow_m > config.scene_flow_point_m ? 1 : 0;
+  }
+  v.mean_flow_m = v.points ? sum / v.points : 0.0;
+  v.decided = v.points >= config.scene_flow_min_points;
+  v.dynamic = v.decided && double(v.moving) > config.scene_flow_share * double(v.points);
+  return v;
+}
+
+std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step) {
+  CV_Assert(mask.type() == CV_8UC1 && step > 0);
+  std::vector<cv::Point> pixels;
+  for (int v = step / 2; v < mask.rows; v += step) {
+    const uchar* row = mask.ptr<uchar>(v);
+    for (int u = step / 2; u < mask.cols; u += step)
+      if (row[u]) pixels.emplace_back(u, v);
+  }
+  return pixels;
+}
+
+namespace {
+/// Depth at a sub-pixel position by nearest pixel (bilinear would blend across depth edges).
+float depthAt(const cv::Mat& depth_m, float u, float v) {
+  const int x = int(std::lround(u)), y = int(std::lround(v));
+  if (x < 0 || y < 0 || x >= depth_m.cols || y >= depth_m.rows) return 0.f;
+  return depth_m.at<float>(y, x);
+}
+}  // namespace
+
+void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
+                             const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
+                             const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
+                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept) {
+  CV_Assert(flow.type() == CV_32FC2);
+  p_prev_camera.clear();
+  p_cur_camera.clear();
+  if (kept) kept->clear();
+  for (size_t i = 0; i < prev_pixels.size(); ++i) {
+    const cv::Point& p = prev_pixels[i];
+    if (p.x < 0 || p.y < 0 || p.x >= flow.cols || p.y >= flow.rows) continue;
+    const cv::Vec2f f = flow.at<cv::Vec2f>(p);
+    const float u1 = float(p.x) + f[0], v1 = float(p.y) + f[1];
+    if (!camera.inImage(u1, v1)) continue;
+    const float z0 = prev_depth_m.at<float>(p), z1 = depthAt(cur_depth_m, u1, v1);
+    if (!validDepth(z0) || !validDepth(z1)) continue;
+    p_prev_camera.push_back(camera.backproject(p.x, p.y, z0));
+    p_cur_camera.push_back(camera.backproject(u1, v1, z1));
+    if (kept) kept->push_back(i);
+  }
+}
+
+}  // namespace dynanav

@@ -1,0 +1,44 @@
+#pragma once
+// Prior-dynamic objects (people) confirmed by 3D scene flow (Ou et al. 2022, §3.2): sample points
+// inside the object's mask, follow them to the next frame with optical flow, lift both ends with
+// depth, remove the camera's own motion, and call a point moving if it moved more than
+// scene_flow_point_m (0.02 m); the object is dynamic when more than scene_flow_share (30 %) of its
+// points move. A sitting person is then static: their points may help tracking but never become
+// map points.
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/config/dynamics.hpp"
+#include "core/se3.hpp"
+
+namespace dynanav {
+
+struct SceneFlowVerdict {
+  int points = 0;         ///< points with valid depth at both ends
+  int moving = 0;         ///< of them, moving more than the threshold
+  double mean_flow_m = 0; ///< mean 3D displacement after ego-motion compensation
+  bool decided = false;   ///< enough points for a verdict
+  bool dynamic = false;
+};
+
+/// Verdict from corresponding 3D points of one object in the previous and current camera frames.
+/// T_cur_prev maps previous-camera coordinates into the current camera (the ego-motion).
+SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
+                                  const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
+                                  const DynamicsConfig& config);
+
+/// Pixels on a regular grid (every `step` px) inside `mask` (CV_8U, non-zero = inside).
+std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);
+
+/// Follows sampled pixels of the previous frame through a dense flow field (CV_32FC2, previous →
+/// current, e.g. DIS) and lifts both ends with depth. Pixels that leave the image or lack depth
+/// at either end are dropped; `kept` (optional) receives the indices of the pixels kept.
+/// Pixels are lifted with the pinhole model as they are: distortion shifts both ends alike, so
+/// the displacement it adds is small next to the 0.02 m threshold.
+void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
+                             const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
+                             const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
+                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept = nullptr);
+
+}  // namespace dynanav

@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "dynamics/scene_flow.hpp"
+
+using namespace dynanav;
+
+namespace {
+std::vector<Vec3> blob(int n, const Vec3& centre, std::mt19937& rng) {
+  std::normal_distribution<double> d(0.0, 0.15);
+  std::vector<Vec3> points;
+  for (int i = 0; i < n; ++i) points.push_back(centre + Vec3(d(rng), 2 * d(rng), 0.3 * d(rng)));
+  return points;
+}
+}  // namespace
+
+TEST(SceneFlow, EgoMotionAloneIsStatic) {
+  std::mt19937 rng(3);
+  DynamicsConfig c;
+  const auto p_prev = blob(200, Vec3(0.2, 0, 2.5), rng);
+  const SE3 T_cur_prev = makeSE3(Quat(Eigen::AngleAxisd(0.03, Vec3::UnitY())), Vec3(0.02, 0, -0.04));
+  std::normal_distribution<double> noise(0.0, 0.004);
+  std::vector<Vec3> p_cur;
+  for (const auto& p : p_prev) p_cur.push_back(T_cur_prev * p + Vec3(noise(rng), noise(rng), noise(rng)));
+  const auto v = sceneFlowVerdict(p_prev, p_cur, T_cur_prev, c);
+  EXPECT_TRUE(v.decided);
+  EXPECT_FALSE(v.dynamic);
+  EXPECT_LT(v.mean_flow_m, 0.01);
+}
+
+TEST(SceneFlow, WalkingPersonIsDynamic) {
+  std::mt19937 rng(4);
+  DynamicsConfig c;
+  const auto p_prev = blob(200, Vec3(-0.3, 0, 3.0), rng);
+  const SE3 T_cur_prev = makeSE3(Quat(Eigen::AngleAxisd(0.01, Vec3::UnitY())), Vec3(0, 0, -0.03));
+  const Vec3 walk(1.2 / 30.0, 0, 0);  // 1.2 m/s at 30 frames/s = 0.04 m per frame
+  std::vector<Vec3> p_cur;
+  for (size_t i = 0; i < p_prev.size(); ++i) {
+    // Arms and legs swing: only 60 % of the body moves by the full step in this frame.
+    p_cur.push_back(T_cur_prev * (p_prev[i] + (i % 5 < 3 ? walk : Vec3::Zero())));
+  }
+  const auto v = sceneFlowVerdict(p_prev, p_cur, T_cur_prev, c);
+  EXPECT_TRUE(v.dynamic);
+  EXPECT_NEAR(double(v.moving) / v.points, 0.6, 1e-9);
+}
+
+TEST(SceneFlow, FewPointsGiveNoVerdict) {
+  DynamicsConfig c;
+  const std::vector<Vec3> a = {Vec3(0, 0, 1), Vec3(0, 0, 2)};
+  const std::vector<Vec3> b = {Vec3(1, 0, 1), Vec3(1, 0, 2)};
+  const auto v = sceneFlowVerdict(a, b, SE3::Identity(), c);
+  EXPECT_FALSE(v.decided);
+  EXPECT_FALSE(v.dynamic);
+}
+
+TEST(SceneFlow, SamplingAndLiftingThroughFlow) {
+  PinholeCamera cam;
+  cam.width = 80;
+  cam.height = 60;
+  cam.fx = cam.fy = 50;
+  cam.cx = 40;
+  cam.cy = 30;
+  cv::Mat mask = cv::Mat::zeros(60, 80, CV_8U);
+  mask(cv::Rect(20, 10, 20, 20)).setTo(255);
+  const auto pixels = sampleMaskPixels(mask, 5);
+  EXPECT_EQ(pixels.size(), 16u);  // 4 x 4 grid points inside a 20 x 20 square
+  for (const auto& p : pixels) EXPECT_TRUE(mask.at<uchar>(p));
+
+  // Flow of +3 px in x everywhere; depth 2 m before, 2.1 m after (hole at one target pixel).
+  cv::Mat flow(60, 80, CV_32FC2, cv::Scalar(3.f, 0.f));
+  cv::Mat d0(60, 80, CV_32F, cv::Scalar(2.f)), d1(60, 80, CV_32F, cv::Scalar(2.1f));
+  d1.at<float>(pixels[0].y, pixels[0].x + 3) = 0.f;
+  std::vector<Vec3> a, b;
+  std::vector<size_t> kept;
+  liftFlowCorrespondences(pixels, flow, d0, d1, cam, a, b, &kept);
+  ASSERT_EQ(a.size(), pixels.size() - 1);
+  EXPECT_EQ(kept.front(), 1u);
+  EXPECT_NEAR(a[0].z(), 2.0, 1e-6);
+  EXPECT_NEAR(b[0].z(), 2.1, 1e-6);
+  EXPECT_NEAR(b[0].x(), (pixels[1].x + 3 - 40) * 2.1 / 50.0, 1e-6);
+}
