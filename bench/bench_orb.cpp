@@ -10,13 +10,18 @@
 
 namespace {
 
-cv::Mat benchFrame() {
+std::vector<std::filesystem::path> frameFiles() {
   const std::filesystem::path dir = std::filesystem::path(DYNANAV_SHARED_DIR) /
                                     "data/rgbd_dataset_freiburg1_xyz/rgb";
-  if (!std::filesystem::is_directory(dir)) return {};
   std::vector<std::filesystem::path> files;
+  if (!std::filesystem::is_directory(dir)) return files;
   for (const auto& e : std::filesystem::directory_iterator(dir)) files.push_back(e.path());
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+cv::Mat benchFrame() {
+  const auto files = frameFiles();
   return files.empty() ? cv::Mat() : cv::imread(files.front().string(), cv::IMREAD_GRAYSCALE);
 }
 
@@ -37,10 +42,37 @@ void BM_OrbExtract(benchmark::State& state) {
   state.counters["features"] = static_cast<double>(keypoints.size());
   std::vector<int> per_level(extractor.levels(), 0);
   for (const auto& kp : keypoints) ++per_level[kp.octave];
-  for (int l = 0; l < extractor.levels(); ++l)
-    state.counters["L" + std::to_string(l)] = per_level[l];
+  for (int l = 0; l < extractor.levels(); ++l) {
+    std::string name = "L";  // (not "L" + to_string: GCC 12 warns falsely about that)
+    name += std::to_string(l);
+    state.counters[name] = per_level[l];
+  }
 }
 BENCHMARK(BM_OrbExtract)->Unit(benchmark::kMillisecond);
+
+// 50 frames spread over the whole sequence (some blurred by fast motion): time per frame and the
+// fewest features any of them gave.
+void BM_OrbExtractSequence(benchmark::State& state) {
+  cv::setNumThreads(0);
+  const auto files = frameFiles();
+  if (files.empty()) {
+    state.SkipWithError("../shared/data/rgbd_dataset_freiburg1_xyz/rgb not found: skipped");
+    return;
+  }
+  std::vector<cv::Mat> frames;
+  for (size_t i = 0; i < 50; ++i)
+    frames.push_back(cv::imread(files[i * files.size() / 50].string(), cv::IMREAD_GRAYSCALE));
+  dynanav::OrbExtractor extractor{dynanav::OrbConfig{}};
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+  size_t i = 0, fewest = 1000000;
+  for (auto _ : state) {
+    extractor.extract(frames[i++ % frames.size()], keypoints, descriptors);
+    fewest = std::min(fewest, keypoints.size());
+  }
+  state.counters["min_features"] = static_cast<double>(fewest);
+}
+BENCHMARK(BM_OrbExtractSequence)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
