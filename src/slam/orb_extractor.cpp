@@ -80,8 +80,15 @@ void OrbExtractor::detectLevel(int level, std::vector<cv::KeyPoint>& out) {
   // threshold in cells that gave nothing, so textureless areas still contribute. One pass over
   // the whole region with the initial threshold finds the same corners (FAST is local) at a
   // fraction of the cost; only empty cells are searched again.
+  // With a mask, corners on masked pixels are dropped before the distribution, so the whole
+  // budget goes to the allowed part of the image.
+  const cv::Mat* mask = has_mask_ ? &mask_pyramid_[level] : nullptr;
+  const auto allowed = [&](const cv::KeyPoint& kp) {
+    return !mask || mask->at<uchar>(static_cast<int>(kp.pt.y) + border, static_cast<int>(kp.pt.x) + border) != 0;
+  };
   std::vector<cv::KeyPoint> found;
   cv::FAST(roi, found, config_.fast_threshold_initial, true);
+  if (mask) std::erase_if(found, [&](const cv::KeyPoint& kp) { return !allowed(kp); });
   const int n_cols = std::max(1, region.width / kCellSize);
   const int n_rows = std::max(1, region.height / kCellSize);
   const int cell_w = (region.width + n_cols - 1) / n_cols;
@@ -100,11 +107,12 @@ void OrbExtractor::detectLevel(int level, std::vector<cv::KeyPoint>& out) {
                           cell_w + 2 * kFastBorder, cell_h + 2 * kFastBorder);
       const cv::Rect window = cell & cv::Rect(0, 0, region.width, region.height);
       if (window.width <= 2 * kFastBorder || window.height <= 2 * kFastBorder) continue;
+      if (mask && cv::countNonZero((*mask)(window + region.tl())) == 0) continue;
       cv::FAST(roi(window), cell_scratch_, config_.fast_threshold_min, true);
       for (auto kp : cell_scratch_) {
         kp.pt.x += static_cast<float>(window.x);
         kp.pt.y += static_cast<float>(window.y);
-        found.push_back(kp);
+        if (allowed(kp)) found.push_back(kp);
       }
     }
   }
@@ -125,11 +133,26 @@ void OrbExtractor::detectLevel(int level, std::vector<cv::KeyPoint>& out) {
 
 void OrbExtractor::extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypoints,
                            cv::Mat& descriptors) {
+  extract(gray, cv::Mat(), keypoints, descriptors);
+}
+
+void OrbExtractor::extract(const cv::Mat& gray, const cv::Mat& mask,
+                           std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors) {
   cv::Mat input = gray;
   if (gray.type() == CV_8UC3) cv::cvtColor(gray, input, cv::COLOR_BGR2GRAY);
   if (input.type() != CV_8UC1 || input.empty())
     throw std::invalid_argument("OrbExtractor::extract: need a non-empty CV_8UC1 image");
+  has_mask_ = !mask.empty();
+  if (has_mask_ && (mask.type() != CV_8UC1 || mask.size() != input.size()))
+    throw std::invalid_argument("OrbExtractor::extract: the mask must be CV_8UC1 of the image size");
   buildPyramid(input);
+  if (has_mask_) {
+    mask_pyramid_.resize(levels());
+    mask_pyramid_[0] = mask;
+    // Each level straight from level 0 (nearest neighbour), so masks do not erode level by level.
+    for (int i = 1; i < levels(); ++i)
+      cv::resize(mask, mask_pyramid_[i], pyramid_[i].size(), 0, 0, cv::INTER_NEAREST);
+  }
   keypoints.clear();
   keypoints.reserve(config_.n_features + levels() * 4);
   std::vector<cv::KeyPoint> level_kps;

@@ -20,6 +20,11 @@ class OrbExtractor {
   /// by level; descriptors N x 32 CV_8U, row i for keypoint i. `gray` is CV_8UC1 (BGR is
   /// converted). Deterministic: the same image always gives the same output.
   void extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors);
+  /// Same, with features only where `mask` (CV_8UC1, image size) is non-zero; an empty mask allows
+  /// everything. The feature budget is spread over the allowed part, so masking out a person does
+  /// not cost static features (for the dynamic-scene pipeline).
+  void extract(const cv::Mat& gray, const cv::Mat& mask, std::vector<cv::KeyPoint>& keypoints,
+               cv::Mat& descriptors);
 
   [[nodiscard]] int levels() const { return static_cast<int>(scale_.size()); }
   /// Per level: scale relative to level 0 (1.0 at level 0), its inverse, and the squares, which
@@ -43,6 +48,8 @@ class OrbExtractor {
   std::vector<int> n_per_level_;
   std::vector<int> umax_;  // half-width of the orientation disc per row offset
   std::vector<cv::Mat> pyramid_;
+  std::vector<cv::Mat> mask_pyramid_;
+  bool has_mask_ = false;
   std::vector<cv::KeyPoint> cell_scratch_;
   cv::Ptr<cv::ORB> descriptor_;  // only for rBRIEF with OpenCV's learned test pattern
 };

@@ -163,6 +163,30 @@ TEST(OrbExtractor, DescriptorsAreDeterministicAndRotationInvariant) {
   EXPECT_GE(close, matched * 8 / 10);
 }
 
+TEST(OrbExtractor, MaskKeepsFeaturesOutAndTheBudgetInTheRest) {
+  const cv::Mat image = texturedImage(640, 480, 21);
+  cv::Mat mask(480, 640, CV_8UC1, cv::Scalar(255));
+  mask(cv::Rect(0, 0, 320, 480)).setTo(0);      // a person filling the left half
+  mask(cv::Rect(400, 100, 100, 100)).setTo(0);  // and something else
+  OrbExtractor extractor{OrbConfig{}};
+  std::vector<cv::KeyPoint> kps, unmasked;
+  cv::Mat desc, desc_unmasked;
+  extractor.extract(image, mask, kps, desc);
+  EXPECT_GE(kps.size(), 900u) << "the budget moves to the allowed half";
+  EXPECT_EQ(desc.rows, static_cast<int>(kps.size()));
+  for (const auto& kp : kps) {
+    // Nearest-neighbour masks per level: allow the level's pixel size in level-0 pixels.
+    const float slack = extractor.scaleFactors()[kp.octave];
+    ASSERT_GE(kp.pt.x, 320.0f - slack);
+    ASSERT_FALSE(kp.pt.x > 400 + slack && kp.pt.x < 500 - slack && kp.pt.y > 100 + slack && kp.pt.y < 200 - slack)
+        << kp.pt;
+  }
+  // The mask is per call: the next call without one covers the whole image again.
+  extractor.extract(image, unmasked, desc_unmasked);
+  EXPECT_GT(std::count_if(unmasked.begin(), unmasked.end(), [](const cv::KeyPoint& k) { return k.pt.x < 300; }), 300);
+  EXPECT_THROW(extractor.extract(image, cv::Mat(10, 10, CV_8UC1), kps, desc), std::invalid_argument);
+}
+
 TEST(OrbExtractor, DescriptorDistanceCountsBits) {
   cv::Mat a = cv::Mat::zeros(1, 32, CV_8U), b = cv::Mat::zeros(1, 32, CV_8U);
   EXPECT_EQ(descriptorDistance(a, b), 0);
