@@ -1,0 +1,57 @@
+#pragma once
+// Triangle meshes for the rasteriser. Each vertex carries its texture coordinate in texels of
+// its texture's level 0. Front faces: (p1 - p0) x (p2 - p0) points towards a viewer who sees them.
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace dynanav::sim {
+
+using Vec3f = Eigen::Vector3f;
+using Vec2f = Eigen::Vector2f;
+using Pose3f = Eigen::Isometry3f;
+
+struct Triangle {
+  std::array<int, 3> v{};
+  int texture = 0;
+};
+
+struct Mesh {
+  std::vector<Vec3f> positions;
+  std::vector<Vec2f> uvs;  ///< one per position
+  std::vector<Triangle> triangles;
+
+  /// A textured rectangle seen from the side where `axis_u` points right and `axis_v` points
+  /// down (so its outward normal is axis_v x axis_u). Texture coordinates run from `uv_origin`
+  /// by `texels_per_m` along both axes. Split into tiles of at most `max_tile_m`, so per-triangle
+  /// quantities (mip level, lighting) stay local and near-plane clipping stays cheap.
+  void addQuad(const Vec3f& origin, const Vec3f& axis_u, const Vec3f& axis_v, int texture,
+               float texels_per_m, const Vec2f& uv_origin = Vec2f::Zero(), float max_tile_m = 1.0f);
+  /// Like addQuad, with the whole texture stretched over the rectangle exactly once.
+  void addQuadFitted(const Vec3f& origin, const Vec3f& axis_u, const Vec3f& axis_v, int texture,
+                     const Vec2f& texture_size);
+
+  /// An axis-aligned box (centre and full size, local frame, y up) facing outwards. `textures`
+  /// gives +x, -x, +y, -y, +z, -z faces; each face starts at its own texture offset so the
+  /// same texture on several faces does not repeat visibly.
+  void addBox(const Vec3f& centre, const Vec3f& size, const std::array<int, 6>& textures,
+              float texels_per_m, const std::array<Vec2f, 6>& uv_offsets = {});
+  void addBox(const Vec3f& centre, const Vec3f& size, int texture, float texels_per_m,
+              float uv_offset = 0.0f);
+  /// A vertical n-sided prism (cylinder stand-in) with caps, base centre at `base`.
+  void addPrism(const Vec3f& base, float radius, float height, int sides, int texture,
+                float texels_per_m);
+
+  /// Appends another mesh transformed by T_this_other.
+  void append(const Mesh& other, const Pose3f& T_this_other);
+};
+
+/// One mesh placed in the world for one frame. instance_id 0 = static background.
+struct DrawItem {
+  const Mesh* mesh = nullptr;
+  Pose3f T_world_mesh = Pose3f::Identity();
+  uint16_t instance_id = 0;
+};
+
+}  // namespace dynanav::sim

@@ -1,0 +1,262 @@
+#include "sim/scenarios.hpp"
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "core/error.hpp"
+
+namespace dynanav::sim {
+
+namespace {
+constexpr double kPi = M_PI;
+constexpr double kNorth = 0.0, kEast = kPi / 2, kSouth = kPi, kWest = -kPi / 2;  // yaw of a front
+// (In the room frame, yaw 0 faces +z and yaw +90 deg faces +x.)
+
+SmoothPath line(const Vec2& a, const Vec2& b) { return SmoothPath({a, b}, 0.0); }
+double headingOf(const Vec2& d) { return std::atan2(d.x(), d.y()); }
+
+/// Shared set-up: the scene, its world builder and the helpers that add movers.
+struct Stage {
+  std::unique_ptr<Scene> scene = std::make_unique<Scene>();
+  Rng rng;
+  WorldBuilder build;
+  Stage(uint64_t seed, const PhotoLibrary& photos) : rng(seed), build(scene->world, rng, photos) {}
+
+  Mover& person(uint16_t id, const Motion& motion) {
+    scene->people.push_back(std::make_unique<Person>(scene->world, rng, build.texelsPerMetre()));
+    Mover m;
+    m.id = id;
+    m.cls = "person";
+    m.motion = motion;
+    m.person = scene->people.back().get();
+    m.centre_height_m = m.person->torsoCentreHeight();
+    scene->movers.push_back(m);
+    return scene->movers.back();
+  }
+  Mover& box(uint16_t id, const Motion& motion, double size_m) {
+    auto mesh = std::make_unique<Mesh>();
+    const int tex = build.texture(cardboard(cv::Size(int(size_m * 2 * build.texelsPerMetre()), int(size_m * build.texelsPerMetre())), rng));
+    const float s = float(size_m);
+    mesh->addBox(Vec3f(0, s / 2, 0), Vec3f(s, s, s), tex, build.texelsPerMetre(), 0.0f);
+    Mover m;
+    m.id = id;
+    m.cls = "box";
+    m.motion = motion;
+    m.mesh = mesh.get();
+    m.centre_height_m = size_m / 2;
+    scene->rigid_meshes.push_back(std::move(mesh));
+    scene->movers.push_back(m);
+    return scene->movers.back();
+  }
+  /// The wearer stands still for `wait_s` (so SLAM can initialise), then walks.
+  void wearer(const std::vector<Vec2>& waypoints, double speed_mps, double corner_radius_m, double wait_s = 0.5) {
+    const SmoothPath path(waypoints, corner_radius_m);
+    scene->wearer = Motion(path.start(), headingOf(path.tangent(0.0)));
+    scene->wearer.wait(wait_s).walk(path, speed_mps, 1.0);
+  }
+};
+
+/// An office 7 x 9 m: desks behind cubicle partitions, shelves, a pillar, doors. Movers keep to
+/// the aisles; enough surfaces stay within the depth sensor's 4.5 m wherever the wearer looks.
+void furnishOffice(Stage& st) {
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {7, 9}, 2.8);
+  b.partition({1.5, 2.0}, kEast, 1.6);
+  b.desk({0.4, 2.0}, kEast);
+  b.chair({1.0, 2.0}, kWest);
+  b.partition({5.5, 1.6}, kWest, 1.6);
+  b.desk({6.6, 1.6}, kWest);
+  b.desk({0.4, 3.8}, kEast);
+  b.chair({1.1, 3.7}, kWest + 0.3);
+  b.pillar({4.9, 5.2}, 0.5);
+  b.cabinet({0.23, 6.0}, kEast);
+  b.plant({0.6, 6.95});
+  b.shelf({0.18, 8.0}, kEast, 1.2);
+  b.shelf({6.82, 3.6}, kWest, 1.0);
+  b.closedDoor({7.0, 5.3}, kWest);
+  b.desk({6.65, 7.2}, kWest);
+  b.bin({6.6, 8.4});
+  b.closedDoor({2.0, 9.0}, kSouth);
+  b.shelf({4.5, 8.82}, kSouth, 1.4);
+  b.closedDoor({1.5, 0.0}, kNorth);
+  b.cabinet({4.5, 0.23}, kNorth);
+}
+
+std::unique_ptr<Scene> staticRoom(Stage& st) {
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {6, 7}, 2.7);
+  b.desk({0.4, 2.2}, kEast);
+  b.chair({1.15, 2.2}, kWest);
+  b.shelf({0.18, 4.5}, kEast, 1.2);
+  b.desk({1.7, 3.9}, kSouth);
+  b.chair({1.7, 3.15}, kNorth);
+  b.partition({4.8, 2.6}, kWest, 1.6);
+  b.shelf({5.82, 2.0}, kWest, 1.0);
+  b.cabinet({5.77, 3.9}, kWest);
+  b.desk({4.5, 6.6}, kSouth);
+  b.chair({4.5, 5.85}, kNorth);
+  b.plant({1.0, 6.4});
+  b.closedDoor({2.3, 7.0}, kSouth);
+  b.bin({5.6, 5.2});
+  st.wearer({{3.0, 1.0}, {3.0, 3.6}, {4.0, 4.9}}, 0.8, 2.0);
+  st.scene->duration_s = 10.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> approach(Stage& st) {
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {5, 14}, 2.7);
+  for (int i = 0; i < 4; ++i) {
+    b.shelf({0.18, 2.0 + 3.2 * i}, kEast, 1.0);
+    b.cabinet({4.77, 1.5 + 3.1 * i}, kWest);
+  }
+  b.closedDoor({0.0, 3.6}, kEast);
+  b.closedDoor({5.0, 6.2}, kWest);
+  b.plant({0.5, 8.3});
+  b.plant({4.5, 12.8});
+  b.closedDoor({2.5, 14.0}, kSouth);
+  st.wearer({{2.5, 1.0}, {2.5, 12.0}}, 0.8, 1.0);
+  st.person(1, Motion({2.0, 12.5}, kSouth).wait(0.5).walk(line({2.0, 12.5}, {2.0, 1.5}), script::kApproachSpeedMps));
+  st.scene->duration_s = 9.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> crossing(Stage& st) {
+  furnishOffice(st);
+  const double v_wearer = 0.9, wait = 0.5, ramp = 1.0, x_w = 3.5, z_w0 = 0.8;
+  st.wearer({{x_w, z_w0}, {x_w, 8.0}}, v_wearer, 1.0, wait);
+  // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is kCrossingAheadM short of it.
+  const double start_x = 6.3, t_c = 3.0;
+  const double s_wearer = v_wearer * ramp / 2 + v_wearer * (t_c - wait - ramp);  // trapezoid, past the ramp
+  const double z_c = z_w0 + s_wearer + script::kCrossingAheadM;
+  const double t_start = t_c - (start_x - x_w) / script::kCrossingSpeedMps;
+  st.person(1, Motion({start_x, z_c}, kWest).wait(t_start).walk(line({start_x, z_c}, {1.0, z_c}), script::kCrossingSpeedMps));
+  st.scene->duration_s = 7.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> office(Stage& st) {
+  furnishOffice(st);
+  st.wearer({{3.5, 0.8}, {3.5, 4.8}, {4.6, 7.0}}, 0.9, 2.0);
+  st.person(1, Motion({6.3, 5.8}, kWest).wait(1.0).walk(SmoothPath({{6.3, 5.8}, {1.4, 5.8}, {1.4, 4.5}}, 1.0), 1.2));
+  st.person(2, Motion({2.5, 8.5}, kSouth).wait(0.5).walk(line({2.5, 8.5}, {2.5, 2.2}), 1.0));
+  st.person(3, Motion({6.0, 3.0}, kNorth).walk(SmoothPath({{6.0, 3.0}, {6.0, 7.6}, {5.4, 8.2}}, 0.8), 0.7));
+  st.scene->duration_s = 10.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> pushedBox(Stage& st) {
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {7, 6.5}, 2.7);
+  b.shelf({0.18, 2.0}, kEast, 1.2);
+  b.desk({0.4, 4.0}, kEast);
+  b.shelf({6.82, 2.5}, kWest, 1.2);
+  b.cabinet({6.77, 4.2}, kWest);
+  b.plant({6.5, 5.9});
+  b.closedDoor({3.0, 6.5}, kSouth);
+  b.shelf({5.0, 6.32}, kSouth, 1.0);
+  st.wearer({{3.5, 0.8}, {3.5, 2.2}}, 0.8, 1.0);
+  // The walker comes round to stand behind the box (hands on its back face), pushes it 1 m
+  // along +x at kPushSpeedMps, then turns away.
+  const Vec2 box_start(3.0, 4.5), push_dir(1.0, 0.0);
+  const double box_size = 0.5, reach = 0.57;
+  const Vec2 stand = box_start - push_dir * (box_size / 2 + reach);
+  Motion walker({0.9, 5.8}, kSouth);
+  walker.wait(1.0).walk(SmoothPath({{0.9, 5.8}, {1.4, 4.5}, stand}, 0.5), 1.0);
+  const double push_from = walker.endTime() + 0.3;
+  walker.wait(0.3).walk(line(stand, stand + push_dir * script::kPushDistanceM), script::kPushSpeedMps);
+  const double push_to = walker.endTime();
+  const Vec2 after = stand + push_dir * script::kPushDistanceM;
+  walker.wait(0.5).walk(SmoothPath({after, after + Vec2(-0.3, 1.0), {1.0, 5.9}}, 0.6), 1.1);
+  Mover& person = st.person(1, walker);
+  person.pushing_from = push_from;
+  person.pushing_to = push_to;
+  st.box(2, Motion(box_start, kEast).wait(push_from).walk(line(box_start, box_start + push_dir * script::kPushDistanceM), script::kPushSpeedMps), box_size);
+  st.scene->duration_s = 10.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> loop(Stage& st) {
+  WorldBuilder& b = st.build;
+  // Two rooms side by side; the wearer leaves A through one doorway and comes back through the other.
+  b.room({0, 0}, {6, 6}, 2.7, {{Doorway::kEast, 1.0, 2.0, 2.1, true}, {Doorway::kEast, 4.0, 5.0, 2.1, true}});
+  b.room({6.1, 0}, {12.1, 6}, 2.7, {{Doorway::kWest, 1.0, 2.0, 2.1, false}, {Doorway::kWest, 4.0, 5.0, 2.1, false}});
+  b.shelf({0.18, 1.5}, kEast, 1.2);
+  b.shelf({0.18, 4.5}, kEast, 1.2);
+  b.desk({4.2, 3.0}, kSouth);
+  b.chair({4.2, 2.25}, kNorth);
+  b.plant({0.5, 3.0});
+  b.cabinet({3.0, 5.77}, kSouth);
+  b.closedDoor({1.5, 0.0}, kNorth);
+  b.cabinet({3.5, 0.23}, kNorth);
+  b.openDoor({6.1, 2.0}, kWest);  // hinged at the doorway's edge, swung flat against B's wall
+  b.shelf({11.92, 1.5}, kWest, 1.2);
+  b.shelf({11.92, 4.5}, kWest, 1.0);
+  b.desk({9.0, 3.0}, kNorth);
+  b.chair({9.0, 3.75}, kSouth);
+  b.plant({11.6, 5.6});
+  b.closedDoor({10.0, 6.0}, kSouth);
+  b.cabinet({8.0, 0.23}, kNorth);
+  b.bin({7.0, 5.6});
+  st.wearer({{2.5, 1.5}, {9.6, 1.5}, {9.6, 4.5}, {2.5, 4.5}, {2.5, 1.5}, {5.0, 1.5}}, 0.7, 1.4);
+  st.scene->duration_s = st.scene->wearer.endTime() + 0.5;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> standing(Stage& st) {
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {7, 7}, 2.8);
+  b.shelf({0.18, 2.0}, kEast, 1.2);
+  b.desk({0.4, 4.5}, kEast);
+  b.chair({1.15, 4.5}, kWest);
+  b.shelf({6.82, 5.5}, kWest, 1.2);
+  b.cabinet({6.77, 1.2}, kWest);
+  b.closedDoor({3.5, 7.0}, kSouth);
+  b.shelf({5.3, 6.82}, kSouth, 1.2);
+  b.plant({1.5, 6.5});
+  st.wearer({{3.5, 0.8}, {3.5, 2.4}}, 0.8, 1.0);
+  // Three people chat in a group; at t = 3 s the second walks off towards the east wall.
+  st.person(1, Motion({2.8, 5.0}, kEast).wait(60.0));
+  st.person(2, Motion({4.0, 4.8}, kWest).wait(3.0).walk(SmoothPath({{4.0, 4.8}, {5.6, 4.0}, {6.0, 2.2}}, 1.0), 1.1));
+  st.person(3, Motion({3.5, 5.6}, kSouth).wait(60.0));
+  st.scene->duration_s = 10.0;
+  return std::move(st.scene);
+}
+
+using Factory = std::function<std::unique_ptr<Scene>(Stage&)>;
+const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
+  static const std::vector<std::pair<ScenarioInfo, Factory>> list{
+      {{"static-room", "a furnished room, nobody else in it; the wearer walks a gentle curve"}, staticRoom},
+      {{"approach", "a person walks straight at the wearer down a long room at 1.0 m/s"}, approach},
+      {{"crossing", "a person crosses the wearer's path 2 m ahead at 1.4 m/s"}, crossing},
+      {{"office", "three people walk about an office while the wearer walks (demo default)"}, office},
+      {{"pushed-box", "a person pushes a box 1 m and walks away (a non-prior mover)"}, pushedBox},
+      {{"loop", "the wearer walks a ~21 m loop through two rooms and back to the start"}, loop},
+      {{"standing", "three people stand and talk; after 3 s one walks off"}, standing},
+  };
+  return list;
+}
+}  // namespace
+
+const std::vector<ScenarioInfo>& scenarioList() {
+  static const std::vector<ScenarioInfo> infos = [] {
+    std::vector<ScenarioInfo> v;
+    for (const auto& [info, factory] : registry()) v.push_back(info);
+    return v;
+  }();
+  return infos;
+}
+
+std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos) {
+  for (const auto& [info, factory] : registry()) {
+    if (info.name != name) continue;
+    Stage stage(seed, photos);
+    return factory(stage);
+  }
+  std::string names;
+  for (const auto& info : scenarioList()) names += (names.empty() ? "" : ", ") + info.name;
+  throw InputError("--scenario", "unknown scenario '" + name + "' (choose one of: " + names + ")");
+}
+
+}  // namespace dynanav::sim

@@ -1,0 +1,106 @@
+#include "sim/simulator.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+
+namespace dynanav::sim {
+
+namespace {
+double round6(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }  // + 0.0: no "-0.0" in files
+nlohmann::json vec(const Vec3& v) { return {round6(v.x()), round6(v.y()), round6(v.z())}; }
+}  // namespace
+
+Simulator::Simulator(const SimOptions& options) : options_(options) {
+  if (!(options.fps > 0.0 && options.fps <= 1000.0))
+    throw InputError("--fps", "must be in (0, 1000], got " + std::to_string(options.fps));
+  if (options.frames < 0) throw InputError("--frames", "must be >= 0 (0 = the scenario's length)");
+  const PhotoLibrary photos = options.photos ? PhotoLibrary::systemDefault() : PhotoLibrary();
+  scene_ = buildScenario(options.scenario, options.seed, photos);
+  frames_ = options.frames > 0 ? options.frames : std::max(1, int(std::lround(scene_->duration_s * options.fps)));
+  camera_.name = "dynanav-sim";
+  camera_.width = 640;
+  camera_.height = 480;
+  camera_.fx = camera_.fy = 525.0;
+  camera_.cx = 319.5;
+  camera_.cy = 239.5;
+  camera_.depth_factor = 5000.0;
+  options_.depth.focal_px = camera_.fx;
+  // The world frame is the first camera frame, so the first ground-truth pose is the identity.
+  T_world_room_ = scene_->T_room_camera(stamp(0)).inverse();
+}
+
+Simulator::~Simulator() = default;
+
+double Simulator::stamp(int i) const { return std::stod(stampName(double(i) / options_.fps)); }
+
+std::string Simulator::stampName(double stamp_s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.6f", stamp_s);
+  return buffer;
+}
+
+nlohmann::json Simulator::masksJson() const {
+  nlohmann::json instances = nlohmann::json::object();
+  for (const Mover& m : scene_->movers) instances[std::to_string(m.id)] = {{"class", m.cls}};
+  return {{"instances", instances}};
+}
+
+void Simulator::drawItems(int i, std::vector<DrawItem>& items) const {
+  scene_->drawItems(stamp(i), items);
+  const Pose3f T = T_world_room_.cast<float>();
+  for (DrawItem& item : items) item.T_world_mesh = T * item.T_world_mesh;
+}
+
+SimFrame Simulator::render(int i) {
+  SimFrame f;
+  f.index = i;
+  f.stamp_s = stamp(i);
+  const SE3 T_room_camera = scene_->T_room_camera(f.stamp_s);
+  // Frame 0 is the identity by definition (not just up to rounding), as the files promise.
+  f.T_world_camera = i == 0 ? SE3::Identity() : SE3(T_world_room_ * T_room_camera);
+  drawItems(i, items_);
+  Lighting lighting;
+  lighting.towards_light_world = T_world_room_.linear().cast<float>() * lighting.towards_light_world;
+  RenderBuffers buffers;
+  rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_, scene_->world.textures, buffers, lighting);
+  f.bgr = buffers.bgr;
+  f.depth_true_m = buffers.depth_m;
+  f.instance = buffers.instance;
+  simulateColour(f.bgr, options_.colour, options_.seed, i, f.stamp_s, !options_.noiseless);
+  f.depth_m = options_.noiseless ? f.depth_true_m.clone() : simulateDepth(f.depth_true_m, options_.depth, options_.seed, i);
+
+  // Ground truth of every mover, visible or not (points = 0 when out of view).
+  std::vector<int> pixels(1 << 16, 0);
+  for (int y = 0; y < f.instance.rows; ++y) {
+    const uint16_t* row = f.instance.ptr<uint16_t>(y);
+    for (int x = 0; x < f.instance.cols; ++x) ++pixels[row[x]];
+  }
+  const SE3 T_camera_world = f.T_world_camera.inverse();
+  nlohmann::json objects = nlohmann::json::array();
+  for (const Mover& m : scene_->movers) {
+    const Vec3 p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
+    const Vec3 v_world = T_world_room_.linear() * scene_->moverVelocity(m, f.stamp_s);
+    const Vec3 p_camera = T_camera_world * p_world;
+    const double bearing_deg = std::atan2(p_camera.x(), p_camera.z()) * 180.0 / M_PI;
+    int clock = int(std::lround(bearing_deg / 30.0));
+    clock = ((clock % 12) + 12) % 12;
+    const double speed = v_world.norm();
+    objects.push_back({{"id", m.id},
+                       {"class", m.cls},
+                       {"dynamic", speed > 1e-6},
+                       {"position_world", vec(p_world)},
+                       {"position_camera", vec(p_camera)},
+                       {"distance", round6(p_camera.norm())},
+                       {"bearing_deg", round6(bearing_deg)},
+                       {"clock", clock == 0 ? 12 : clock},
+                       {"velocity_world", vec(v_world)},
+                       {"speed", round6(speed)},
+                       {"points", pixels[m.id]}});
+  }
+  f.objects = {{"t", f.stamp_s}, {"objects", objects}};
+  return f;
+}
+
+}  // namespace dynanav::sim
