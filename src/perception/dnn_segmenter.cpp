@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <numeric>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/timer.hpp"
@@ -67,36 +68,56 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   timing_["detect_forward"] = dt.forward_ms;
   timing_["detect_post"] = dt.postprocess_ms;
 
-  double masks_ms = 0.0, keypoints_ms = 0.0;
+  // Objects first (cheap depth masks), then the people, whose two networks run as two
+  // parallel tasks: selfie masks for all people on one core, MoveNet for all on the other.
+  // cv::parallel_for_ runs nested loops serially, so each network then uses one thread; on two
+  // cores this beats running each small network on two threads in turn (bench_perception).
+  auto t0 = Clock::now();
   std::vector<MaskedObject> objects;
+  std::vector<MaskedObject> people;
   for (const Detection& d : detections) {
     MaskedObject o;
     o.record.class_name = d.class_name;
     o.record.score = d.score;
     o.record.box = d.box;
-    auto t0 = Clock::now();
     if (d.class_id == 0) {
-      if (d.score < config_.person_min_score) continue;
-      o.mask_in_box = personMask(frame, d.box, o.record.mask_source);
-      masks_ms += msSince(t0);
-      if (keypoints_) {
-        t0 = Clock::now();
-        o.record.keypoints = keypoints_->detect(frame.bgr, d.box);
-        keypoints_ms += msSince(t0);
-      }
+      if (d.score < config_.person_min_score || d.box.height < config_.person_min_height_px) continue;
+      people.push_back(std::move(o));
     } else if (object_classes_.count(d.class_name) && !frame.depth_m.empty()) {
       o.mask_in_box = depthMaskInBox(frame.depth_m, d.box, config_.depth_bin_m, config_.depth_band_m);
       o.record.mask_source = "depth";
-      masks_ms += msSince(t0);
-    } else {
-      continue;
+      objects.push_back(std::move(o));
     }
-    objects.push_back(std::move(o));
   }
+  timing_["object_masks"] = msSince(t0);
+
+  t0 = Clock::now();
+  double masks_ms = 0.0, keypoints_ms = 0.0;
+  auto masksTask = [&] {
+    const auto start = Clock::now();
+    for (MaskedObject& p : people) p.mask_in_box = personMask(frame, p.record.box, p.record.mask_source);
+    masks_ms = msSince(start);
+  };
+  auto keypointsTask = [&] {
+    const auto start = Clock::now();
+    for (MaskedObject& p : people) p.record.keypoints = keypoints_->detect(frame.bgr, p.record.box);
+    keypoints_ms = msSince(start);
+  };
+  if (keypoints_ && !people.empty() && config_.parallel_person_models) {
+    cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& r) {
+      for (int task = r.start; task < r.end; ++task) task == 0 ? masksTask() : keypointsTask();
+    }, 2);
+  } else {
+    masksTask();
+    if (keypoints_) keypointsTask();
+  }
+  timing_["person_models"] = msSince(t0);
+  // People take the first ids.
+  for (MaskedObject& o : objects) people.push_back(std::move(o));
   timing_["masks"] = masks_ms;
   timing_["keypoints"] = keypoints_ms;
-  const auto t0 = Clock::now();
-  Instances out = paintObjects(std::move(objects), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
+  t0 = Clock::now();
+  Instances out = paintObjects(std::move(people), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
   timing_["paint"] = msSince(t0);
   return out;
 }

@@ -107,9 +107,9 @@ Instances MaskFolderWriter::write(const std::string& stem, const Instances& inst
 }
 
 void MaskFolderWriter::finish() {
-  nlohmann::json instances = nlohmann::json::object();
+  nlohmann::ordered_json instances = nlohmann::ordered_json::object();  // ids in numeric order
   for (const auto& [id, name] : classes_) instances[std::to_string(id)] = {{"class", name}};
-  std::ofstream(dir_ / "masks.json") << nlohmann::json{{"instances", instances}}.dump(2) << "\n";
+  std::ofstream(dir_ / "masks.json") << nlohmann::ordered_json{{"instances", instances}}.dump(2) << "\n";
   finished_ = true;
 }
 

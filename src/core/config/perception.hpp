@@ -18,6 +18,7 @@ struct PerceptionConfig {
   double detector_nms_iou = 0.45;
   double person_min_score = 0.35;
   double min_box_height_px = 24.0;
+  double person_min_height_px = 72.0;
   std::vector<std::string> object_classes{"bicycle", "car",      "motorbike", "cat",
                                           "dog",     "backpack", "umbrella",  "handbag",
                                           "suitcase", "chair"};
@@ -34,6 +35,7 @@ struct PerceptionConfig {
   // Keypoints (MoveNet Lightning per person box).
   bool keypoints = true;
   double keypoint_crop_scale = 1.15;
+  bool parallel_person_models = true;
 
   // Propagation between segmented frames (DIS optical flow).
   double flow_scale = 0.5;
@@ -53,6 +55,9 @@ struct PerceptionConfig {
     v("detector_nms_iou", detector_nms_iou, "non-maximum suppression IoU per class");
     v("person_min_score", person_min_score, "person boxes below this score are not segmented");
     v("min_box_height_px", min_box_height_px, "boxes lower than this (px) are ignored");
+    v("person_min_height_px", person_min_height_px,
+      "person boxes lower than this (px) are ignored (Bonn's ceiling marker is a 26x40 px 'person'; "
+      "a 1.7 m person 10 m away is ~90 px tall)");
     v("object_classes", object_classes, "COCO classes besides person that get depth masks");
     v("selfie_crop_scale", selfie_crop_scale, "square crop side / longer box side for the selfie model");
     v("selfie_threshold", selfie_threshold, "selfie probability above which a pixel is person");
@@ -62,6 +67,8 @@ struct PerceptionConfig {
     v("depth_bin_m", depth_bin_m, "histogram bin for the depth mode (m)");
     v("keypoints", keypoints, "run MoveNet on person boxes (shoulders, hips)");
     v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet");
+    v("parallel_person_models", parallel_person_models,
+      "run the selfie model and MoveNet as two parallel single-thread tasks (else one after the other)");
     v("flow_scale", flow_scale, "image scale at which DIS flow is computed for propagation");
     v("propagation_depth_band_m", propagation_depth_band_m,
       "propagated pixels farther than this from the instance's depth mode are dropped (m)");
