@@ -53,6 +53,7 @@ class KeyframeDatabase {
 
   /// Candidates sharing words with `bow`, ordered by accumulated score, then score (both
   /// descending), then id (ascending): the same database and query always give the same list.
+  /// The callbacks in `options` run under the database's lock: they must not call back into it.
   [[nodiscard]] std::vector<PlaceCandidate> query(const BowVector& bow, const PlaceQuery& options) const;
 
  private:

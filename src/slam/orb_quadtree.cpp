@@ -54,7 +54,8 @@ std::vector<cv::KeyPoint> distributeQuadtree(const std::vector<cv::KeyPoint>& ca
     const int r = static_cast<int>((candidates[i].pt.x - x0) / root_width);
     return std::clamp(r, 0, n_roots - 1);
   };
-  std::stable_sort(index.begin(), index.end(), [&](int a, int b) { return root_of(a) < root_of(b); });
+  if (n_roots > 1)
+    std::stable_sort(index.begin(), index.end(), [&](int a, int b) { return root_of(a) < root_of(b); });
   std::vector<Node> leaves;
   for (int r = 0, begin = 0; r < n_roots; ++r) {
     int end = begin;

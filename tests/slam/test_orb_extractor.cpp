@@ -88,6 +88,17 @@ TEST(OrbExtractor, QuadtreeTakesTheStrongestPerRegionNotTheDensestRegion) {
   const auto weak = std::count_if(kept.begin(), kept.end(), [](const cv::KeyPoint& k) { return k.response < 50; });
   EXPECT_GE(weak, 90) << "the sparse region must not be starved";
   EXPECT_TRUE(distributeQuadtree({}, 0, 640, 0, 480, 10).empty());
+  // A wide region gets several side-by-side roots; every third of it still gets its share.
+  std::vector<cv::KeyPoint> wide;
+  for (int i = 0; i < 3000; ++i)
+    wide.emplace_back(cv::Point2f(static_cast<float>((i * 37) % 1200), static_cast<float>((i * 53) % 400)),
+                      7.f, -1.f, static_cast<float>(i % 11));
+  const auto spread = distributeQuadtree(wide, 0, 1200, 0, 400, 300);
+  EXPECT_GE(spread.size(), 290u);
+  EXPECT_LE(spread.size(), 300u);
+  int thirds[3] = {};
+  for (const auto& k : spread) ++thirds[static_cast<int>(k.pt.x / 400)];
+  for (int t : thirds) EXPECT_GE(t, 80);
   // Identical coordinates cannot be separated: the loop must still end.
   std::vector<cv::KeyPoint> same(50, cv::KeyPoint(cv::Point2f(10, 10), 7.f, -1.f, 1.f));
   EXPECT_EQ(distributeQuadtree(same, 0, 640, 0, 480, 10).size(), 1u);
