@@ -152,6 +152,16 @@ TEST(OrbExtractor, DescriptorsAreDeterministicAndRotationInvariant) {
     EXPECT_EQ(descriptorDistance(desc_a.row(static_cast<int>(i)), desc_b.row(static_cast<int>(i))), 0);
   }
 
+  // State kept between calls (pyramid, scratch) must not leak into the next frame, whatever its size.
+  std::vector<cv::KeyPoint> kps_other;
+  cv::Mat desc_other, desc_again;
+  extractor.extract(texturedImage(320, 240, 12), kps_other, desc_other);
+  extractor.extract(image, kps_b, desc_again);
+  EXPECT_EQ(cv::norm(desc_a, desc_again, cv::NORM_HAMMING), 0.0);
+  OrbExtractor fresh{OrbConfig{}};
+  fresh.extract(image, kps_b, desc_again);
+  EXPECT_EQ(cv::norm(desc_a, desc_again, cv::NORM_HAMMING), 0.0);
+
   // The same scene turned by 90 degrees: level-0 corners reappear at the turned position with the
   // angle advanced by 90 degrees and (nearly) the same descriptor.
   cv::Mat turned;
