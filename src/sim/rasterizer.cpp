@@ -8,6 +8,7 @@ namespace dynanav::sim {
 
 namespace {
 constexpr int kStripes = 16;  // fixed row partition: the output never depends on thread count
+constexpr double kEdgeTolerancePx = 1e-7;
 
 struct ClipVertex {
   Vec3f p;
@@ -115,10 +116,10 @@ void Rasterizer::addTriangle(const PinholeCamera& camera, const Vec3f p[3], cons
     t.inv_z[i] = 1.0f / p[i].z();
     t.uv[i] = uv[i];
   }
-  t.xmin = std::max(0, int(std::ceil(xmin)));
-  t.xmax = std::min(width_ - 1, int(std::floor(xmax)));
-  t.ymin = std::max(0, int(std::ceil(ymin)));
-  t.ymax = std::min(height_ - 1, int(std::floor(ymax)));
+  t.xmin = std::max(0, int(std::ceil(xmin - kEdgeTolerancePx)));
+  t.xmax = std::min(width_ - 1, int(std::floor(xmax + kEdgeTolerancePx)));
+  t.ymin = std::max(0, int(std::ceil(ymin - kEdgeTolerancePx)));
+  t.ymax = std::min(height_ - 1, int(std::floor(ymax + kEdgeTolerancePx)));
   if (t.xmin > t.xmax || t.ymin > t.ymax) return;
   t.texture = texture;
   t.shade = shade;
@@ -145,10 +146,13 @@ void Rasterizer::rasterRows(int y0, int y1) {
         row[i] = t.edge[i][1] * y + t.edge[i][2];
         if (a > 1e-15) lo = std::max(lo, -row[i] / a);
         else if (a < -1e-15) hi = std::min(hi, -row[i] / a);
-        else if (row[i] < 0) empty = true;
+        else if (row[i] < -1e-12) empty = true;
       }
       if (empty) continue;
-      const int xa = int(std::ceil(lo)), xb = int(std::floor(hi));
+      // Pixels exactly on an edge shared by two triangles belong to both (a z-buffer tie is
+      // harmless); without the tolerance rounding could give them to neither and leave cracks.
+      const int xa = std::max(t.xmin, int(std::ceil(lo - kEdgeTolerancePx)));
+      const int xb = std::min(t.xmax, int(std::floor(hi + kEdgeTolerancePx)));
       if (xa > xb) continue;
       float* iz_row = inv_z_.ptr<float>(y);
       int* id_row = tri_index_.ptr<int>(y);

@@ -190,7 +190,7 @@ std::unique_ptr<Scene> loop(Stage& st) {
   b.cabinet({3.0, 5.77}, kSouth);
   b.closedDoor({1.5, 0.0}, kNorth);
   b.cabinet({3.5, 0.23}, kNorth);
-  b.openDoor({6.1, 2.0}, kWest);  // hinged at the doorway's edge, swung flat against B's wall
+  b.openDoor({6.1, 2.0}, kEast);  // hinged at the doorway's edge, swung flat against B's wall
   b.shelf({11.92, 1.5}, kWest, 1.2);
   b.shelf({11.92, 4.5}, kWest, 1.0);
   b.desk({9.0, 3.0}, kNorth);
@@ -199,7 +199,7 @@ std::unique_ptr<Scene> loop(Stage& st) {
   b.closedDoor({10.0, 6.0}, kSouth);
   b.cabinet({8.0, 0.23}, kNorth);
   b.bin({7.0, 5.6});
-  st.wearer({{2.5, 1.5}, {9.6, 1.5}, {9.6, 4.5}, {2.5, 4.5}, {2.5, 1.5}, {5.0, 1.5}}, 0.7, 1.4);
+  st.wearer({{2.5, 1.5}, {9.6, 1.5}, {9.6, 4.5}, {2.5, 4.5}, {2.5, 1.5}, {5.0, 1.5}}, 0.6, 1.4);
   st.scene->duration_s = st.scene->wearer.endTime() + 0.5;
   return std::move(st.scene);
 }

@@ -85,6 +85,8 @@ void WorldBuilder::wall(const Vec2& a, const Vec2& b, double H, std::vector<Open
     m.addQuad(left, -into_room * thickness, down * h, jamb_tex, tpm_);                             // faces +u
     m.addQuad(right - into_room * thickness, into_room * thickness, down * h, jamb_tex, tpm_);      // faces -u
     m.addQuad(left, u * float(o.s1 - o.s0), -into_room * thickness, jamb_tex, tpm_);               // soffit
+    const Vec3f sill = at3(a + dir * o.s0, 0.0) - into_room * thickness;                              // threshold
+    m.addQuad(sill, u * float(o.s1 - o.s0), into_room * thickness, jamb_tex, tpm_);
   }
   piece(cursor, L, H, 0.0);
 }
