@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "slam/orb_extractor.hpp"
+#include "slam/vocabulary/bow_matching.hpp"
 #include "slam/vocabulary/kmajority_tree.hpp"
 #include "slam/vocabulary/vocabulary.hpp"
 #include "support/test_support.hpp"
@@ -137,6 +138,52 @@ TEST_F(VocabularyTest, PerturbedViewScoresHighestWithItsOwnImage) {
       if (l1Score(query, places[j]) > l1Score(query, places[best])) best = j;
     EXPECT_EQ(best, static_cast<size_t>(i));
   }
+}
+
+TEST_F(VocabularyTest, DirectIndexMatchingFindsTrueCorrespondences) {
+  // A place and a view of it turned by 20 degrees and shifted: the true correspondence of each
+  // keypoint is known from the warp.
+  const cv::Mat image = test::texturedImage(640, 480, 100);
+  const double degrees = 20.0;
+  const cv::Point2d shift(15, -10);
+  const cv::Mat view = test::perturbedView(image, degrees, 1.0, shift, 9);
+  cv::Mat warp = cv::getRotationMatrix2D(cv::Point2f(320, 240), degrees, 1.0);
+  warp.at<double>(0, 2) += shift.x;
+  warp.at<double>(1, 2) += shift.y;
+
+  OrbExtractor extractor{OrbConfig{}};
+  std::vector<cv::KeyPoint> ka, kb;
+  cv::Mat da, db;
+  extractor.extract(image, ka, da);
+  extractor.extract(view, kb, db);
+  BowVector bow;
+  FeatureVector fa, fb;
+  vocabulary_->transform(da, bow, &fa, 2);
+  vocabulary_->transform(db, bow, &fb, 2);
+  const auto matches = matchByDirectIndex(fa, da, ka, fb, db, kb);
+  ASSERT_GE(matches.size(), 100u);
+  int correct = 0;
+  std::vector<int> used_b(kb.size(), 0);
+  for (const auto& m : matches) {
+    ++used_b[m.trainIdx];
+    const cv::Point2f p = ka[m.queryIdx].pt;
+    const cv::Point2d expected(warp.at<double>(0, 0) * p.x + warp.at<double>(0, 1) * p.y + warp.at<double>(0, 2),
+                               warp.at<double>(1, 0) * p.x + warp.at<double>(1, 1) * p.y + warp.at<double>(1, 2));
+    if (cv::norm(cv::Point2d(kb[m.trainIdx].pt) - expected) < 2.0 * extractor.scaleFactors()[ka[m.queryIdx].octave] + 1.0)
+      ++correct;
+    EXPECT_LE(m.distance, 50.0f);
+  }
+  EXPECT_EQ(*std::max_element(used_b.begin(), used_b.end()), 1) << "one A feature per B feature";
+  EXPECT_GE(correct, static_cast<int>(matches.size()) * 9 / 10) << correct << " of " << matches.size();
+
+  // Only usable A features take part.
+  const auto even = matchByDirectIndex(fa, da, ka, fb, db, kb, {}, [](int a) { return a % 2 == 0; });
+  EXPECT_FALSE(even.empty());
+  for (const auto& m : even) EXPECT_EQ(m.queryIdx % 2, 0);
+  // The orientation check drops matches that disagree with the dominant rotation.
+  BowMatchOptions loose;
+  loose.check_orientation = false;
+  EXPECT_GE(matchByDirectIndex(fa, da, ka, fb, db, kb, loose).size(), matches.size());
 }
 
 TEST_F(VocabularyTest, SaveLoadRoundTripIsExact) {
