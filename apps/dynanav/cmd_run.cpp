@@ -1,20 +1,82 @@
-// Placeholder registration, replaced by the module's owner as the feature lands.
+// dynanav run: the whole pipeline over a TUM-layout sequence (DESIGN.md §2). Thin: parses the
+// flags into RunOptions and calls runSequence().
+#include <spdlog/cfg/env.h>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <regex>
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
+#include "pipeline/run_sequence.hpp"
 
 namespace dynanav::cli {
+namespace {
+
+struct RunFlags {
+  std::string sequence_dir;
+  std::string out_dir;
+  std::string config_path;
+  std::string dynamic;
+  std::string blackout;
+  bool deterministic = false;
+  bool realtime = false;
+  int max_frames = 0;
+  bool quiet = false;
+};
+
+int runCommand(const RunFlags& flags) {
+  RunOptions options;
+  options.sequence_dir = flags.sequence_dir;
+  options.out_dir = flags.out_dir;
+  if (!flags.config_path.empty()) options.config = Config::load(flags.config_path);
+  if (!flags.dynamic.empty()) options.config.run.dynamic = flags.dynamic == "on";
+  if (flags.deterministic && flags.realtime)
+    throw InputError("", "--deterministic and --realtime exclude each other");
+  if (flags.deterministic) options.config.run.deterministic = true;
+  if (flags.realtime) {
+    options.config.run.deterministic = false;
+    options.config.run.realtime = true;
+  }
+  if (flags.max_frames < 0) throw InputError("", "--max-frames must be >= 0");
+  if (flags.max_frames > 0) options.config.run.max_frames = flags.max_frames;
+  options.max_frames = options.config.run.max_frames;
+  if (!flags.blackout.empty()) {
+    std::smatch m;
+    const std::regex pattern(R"((\d+):(\d+))");
+    if (!std::regex_match(flags.blackout, m, pattern) || std::stoi(m[1]) > std::stoi(m[2]))
+      throw InputError("", "--blackout expects A:B with 0 <= A <= B, got '" + flags.blackout + "'");
+    options.blackout = std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
+  }
+  spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
+  if (flags.quiet) spdlog::set_level(spdlog::level::warn);
+  options.progress = !flags.quiet && isatty(STDERR_FILENO);
+  const RunSummary summary = runSequence(options);
+  if (!summary.initialised) {
+    spdlog::error("tracking never initialised: no frame had enough keypoints with valid depth");
+    return kExitNotInitialised;
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 void registerRun(CLI::App& root, Action& chosen) {
-  auto* sub = root.add_subcommand("run", "(not built yet)");
-  sub->allow_extras();
-  sub->callback([&chosen] {
-    chosen = [] {
-      spdlog::error("'run' is not built yet");
-      return kExitBadInput;
-    };
-  });
+  auto flags = std::make_shared<RunFlags>();
+  auto* sub = root.add_subcommand("run", "Track a TUM-layout RGB-D sequence; write trajectory, keyframes, stats");
+  sub->add_option("SEQ_DIR", flags->sequence_dir, "sequence folder (rgb.txt, depth.txt, rgb/, depth/)")
+      ->required();
+  sub->add_option("--out", flags->out_dir, "output folder")->required();
+  sub->add_option("--config", flags->config_path, "YAML config (unknown keys are errors)");
+  sub->add_option("--dynamic", flags->dynamic, "on|off: handle moving objects (off = plain SLAM baseline)")
+      ->check(CLI::IsMember({"on", "off"}));
+  sub->add_flag("--deterministic", flags->deterministic,
+                "single thread, local mapping inline: identical results run to run (default)");
+  sub->add_flag("--realtime", flags->realtime, "local mapping in its own thread beside tracking");
+  sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)");
+  sub->add_option("--blackout", flags->blackout, "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
+  sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");
+  sub->callback([&chosen, flags] { chosen = [flags] { return runCommand(*flags); }; });
 }
 
 }  // namespace dynanav::cli

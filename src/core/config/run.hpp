@@ -12,11 +12,15 @@ struct RunConfig {
   bool deterministic = true;
   std::string segmenter = "auto";
   int segment_every = 1;
+  bool realtime = false;
+  int max_frames = 0;
   template <class V> void visit(V&& v) {
     v("dynamic", dynamic, "handle moving objects (false = plain ORB-SLAM2-style baseline)");
     v("deterministic", deterministic, "single thread, identical results run to run");
     v("segmenter", segmenter, "auto | dnn | hog | masks | none");
     v("segment_every", segment_every, "run the segmenter every k-th frame, propagate between");
+    v("realtime", realtime, "pace input at the sequence's frame rate and drop frames on overload");
+    v("max_frames", max_frames, "process at most this many frames (0 = all)");
   }
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // Config section `tracking` (see core/config.hpp for how sections are loaded and echoed).
 // To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+// Defaults follow ORB-SLAM2 (Mur-Artal & Tardos, T-RO 2017) for RGB-D input.
 #include <string>
 #include <vector>
 
@@ -9,8 +10,50 @@ namespace dynanav {
 /// Camera-tracking thresholds.
 struct TrackingConfig {
   double depth_max_m = 8.0;  // depths beyond this are treated as invalid
+  int init_min_depth_features = 500;
+  int motion_search_radius_px = 15;
+  int motion_min_matches = 20;
+  int reference_min_matches = 15;
+  int min_map_matches = 10;
+  int local_map_min_inliers = 30;
+  double local_search_radius_factor = 1.0;
+  double local_nn_ratio = 0.8;
+  int max_local_keyframes = 80;
+  int pose_rounds = 4;
+  int pose_iterations = 10;
+  int keyframe_max_frames = 30;
+  double keyframe_ref_ratio = 0.75;
+  int keyframe_close_tracked_min = 100;
+  int keyframe_close_untracked_max = 70;
+  int new_points_min = 100;
   template <class V> void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored");
+    v("init_min_depth_features", init_min_depth_features,
+      "keypoints with valid depth needed to initialise the map from one frame");
+    v("motion_search_radius_px", motion_search_radius_px,
+      "motion-model projection search radius (px at level 0; doubled on a retry)");
+    v("motion_min_matches", motion_min_matches, "matches below which the motion model fails");
+    v("reference_min_matches", reference_min_matches,
+      "descriptor matches with the reference keyframe below which that fallback fails");
+    v("min_map_matches", min_map_matches, "inlier map matches needed after the first pose fit");
+    v("local_map_min_inliers", local_map_min_inliers,
+      "inliers after local-map tracking below which the frame is lost");
+    v("local_search_radius_factor", local_search_radius_factor,
+      "local-map projection search radius factor (ORB-SLAM2: 1 for RGB-D)");
+    v("local_nn_ratio", local_nn_ratio, "best/second-best descriptor ratio in local-map search");
+    v("max_local_keyframes", max_local_keyframes, "cap on keyframes in the local map");
+    v("pose_rounds", pose_rounds, "pose-only optimisation rounds (outliers re-classified each)");
+    v("pose_iterations", pose_iterations, "solver iterations per pose-optimisation round");
+    v("keyframe_max_frames", keyframe_max_frames,
+      "frames after which a keyframe may be inserted regardless of mapping state");
+    v("keyframe_ref_ratio", keyframe_ref_ratio,
+      "insert a keyframe when tracked matches fall below this share of the reference's points");
+    v("keyframe_close_tracked_min", keyframe_close_tracked_min,
+      "close points tracked below which (with many untracked close ones) a keyframe is needed");
+    v("keyframe_close_untracked_max", keyframe_close_untracked_max,
+      "untracked close points above which (with few tracked) a keyframe is needed");
+    v("new_points_min", new_points_min,
+      "map points created from depth per keyframe before stopping at far points");
   }
 };
 

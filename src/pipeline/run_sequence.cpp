@@ -1,0 +1,119 @@
+#include "pipeline/run_sequence.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "io/json_io.hpp"
+#include "io/sequence.hpp"
+#include "io/trajectory.hpp"
+#include "pipeline/system.hpp"
+
+namespace dynanav {
+namespace {
+
+void drawProgress(size_t done, size_t total, int lost) {
+  const int width = 40;
+  const int filled = total ? static_cast<int>(width * done / total) : width;
+  std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu frames, %d lost", filled,
+               "########################################", width - filled, "", done, total, lost);
+  std::fflush(stderr);
+}
+
+RgbdFrame blackFrame(const RgbdFrame& like, const PinholeCamera& camera) {
+  RgbdFrame f = like;
+  const cv::Size size = like.bgr.empty() ? cv::Size(camera.width, camera.height) : like.bgr.size();
+  f.bgr = cv::Mat::zeros(size, CV_8UC3);
+  f.depth_m = cv::Mat::zeros(size, CV_32F);
+  return f;
+}
+
+nlohmann::json statsJson(const RunSummary& s, const System& system, double wall_s) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [stage, t] : system.timers().summary()) {
+    if (stage == "frame") continue;
+    stages[stage] = {{"mean", t.mean_ms}, {"p95", t.p95_ms}, {"count", t.count}};
+  }
+  const auto all = system.timers().summary();
+  const auto frame_it = all.find("frame");
+  const TimingSummary latency = frame_it != all.end() ? frame_it->second : TimingSummary{};
+  const auto mapping = system.mappingStats();
+  return {{"frames", s.frames},
+          {"tracked", s.tracked},
+          {"lost", s.lost},
+          {"skipped_corrupt", s.skipped},
+          {"dropped", 0},
+          {"relocalisations", 0},
+          {"loops", 0},
+          {"keyframes", system.numKeyFrames()},
+          {"map_points", system.numMapPoints()},
+          {"keyframes_culled", mapping.keyframes_culled},
+          {"points_triangulated", mapping.new_points_triangulated},
+          {"bundle_adjustments", mapping.bundle_adjustments},
+          {"wall_s", wall_s},
+          {"fps", wall_s > 0 ? s.frames / wall_s : 0.0},
+          {"stage_ms", stages},
+          {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
+          {"peak_rss_mb", peakRssMb()}};
+}
+
+}  // namespace
+
+RunSummary runSequence(const RunOptions& options) {
+  const TumSequence sequence = TumSequence::open(options.sequence_dir, options.config.io, options.fallback_camera);
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  if (ec) throw InputError(options.out_dir.string(), "cannot create output folder: " + ec.message());
+  {
+    std::ofstream config_out(options.out_dir / "config_used.yaml");
+    config_out << options.config.toYaml();
+  }
+  spdlog::info("sequence {}: {} frames, camera {} (from {})", sequence.dir().string(), sequence.size(),
+               sequence.camera().name, sequence.cameraSource());
+
+  System system(options.config, sequence.camera());
+  TrajectoryWriter trajectory(options.out_dir / "trajectory.txt");
+  RunSummary summary;
+  size_t total = sequence.size();
+  if (options.max_frames > 0) total = std::min<size_t>(total, options.max_frames);
+  const auto start = std::chrono::steady_clock::now();
+  for (size_t i = 0; i < total; ++i) {
+    RgbdFrame frame;
+    try {
+      frame = sequence.load(i);
+    } catch (const InputError& e) {
+      ++summary.skipped;
+      spdlog::warn("frame {} skipped: {}", i, e.what());
+      continue;
+    }
+    const int index = static_cast<int>(i);
+    if (options.blackout && index >= options.blackout->first && index <= options.blackout->second)
+      frame = blackFrame(frame, sequence.camera());
+    const FrameResult result = system.process(frame);
+    ++summary.frames;
+    if (result.tracked) {
+      ++summary.tracked;
+      trajectory.write({result.stamp_s, result.T_world_camera});
+    } else if (result.state == TrackingState::kLost) {
+      ++summary.lost;
+    }
+    if (result.recovered) spdlog::info("frame {}: tracking recovered", i);
+    if (options.progress && (i % 5 == 0 || i + 1 == total)) drawProgress(i + 1, total, summary.lost);
+  }
+  system.finish();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.progress) std::fprintf(stderr, "\n");
+  summary.initialised = system.numKeyFrames() > 0;
+  writeTrajectory(options.out_dir / "keyframes.txt", system.keyframePoses());
+  writeJsonFile(options.out_dir / "stats.json", statsJson(summary, system, wall_s));
+  spdlog::info("{} frames: {} tracked, {} lost, {} skipped; {} keyframes, {} map points; {:.1f} frames/s",
+               summary.frames, summary.tracked, summary.lost, summary.skipped, system.numKeyFrames(),
+               system.numMapPoints(), wall_s > 0 ? summary.frames / wall_s : 0.0);
+  return summary;
+}
+
+}  // namespace dynanav

@@ -1,0 +1,176 @@
+#include "slam/bundle_adjuster.hpp"
+
+#include <ceres/ceres.h>
+#include <ceres/rotation.h>
+
+namespace dynanav {
+namespace {
+
+constexpr double kChi2Mono = 5.991;
+constexpr double kChi2Stereo = 7.815;
+
+/// p_camera = R(q) p_world + t with q = (w, x, y, z), Ceres' quaternion order.
+struct BaCost {
+  explicit BaCost(const BaObservation& obs, const PoseCamera& cam)
+      : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
+  template <class T>
+  bool operator()(const T* q, const T* t, const T* point, T* residual) const {
+    T p[3];
+    ceres::UnitQuaternionRotatePoint(q, point, p);
+    p[0] += t[0];
+    p[1] += t[1];
+    p[2] += t[2];
+    const T inv_z = T(1.0) / p[2];
+    const T u = T(cam_.fx) * p[0] * inv_z + T(cam_.cx);
+    residual[0] = T(weight_) * (T(obs_.u) - u);
+    residual[1] = T(weight_) * (T(obs_.v) - (T(cam_.fy) * p[1] * inv_z + T(cam_.cy)));
+    if (obs_.u_right >= 0.0) residual[2] = T(weight_) * (T(obs_.u_right) - (u - T(cam_.bf) * inv_z));
+    return true;
+  }
+  BaObservation obs_;
+  PoseCamera cam_;
+  double weight_;
+};
+
+struct PoseBlock {
+  double q[4];  // w, x, y, z
+  double t[3];
+};
+
+PoseBlock toBlock(const SE3& T) {
+  const Quat q(T.linear());
+  return {{q.w(), q.x(), q.y(), q.z()}, {T.translation().x(), T.translation().y(), T.translation().z()}};
+}
+
+SE3 fromBlock(const PoseBlock& b) {
+  return makeSE3(Quat(b.q[0], b.q[1], b.q[2], b.q[3]), Vec3(b.t[0], b.t[1], b.t[2]));
+}
+
+/// (chi2 weighted by the level variance, pixel error^2 in u,v, in front of the camera?)
+struct ObservationError {
+  double chi2;
+  double pixel2;
+  bool in_front;
+};
+
+ObservationError evaluate(const BaObservation& obs, const PoseCamera& cam, const SE3& T_cw, const Vec3& p_w) {
+  const Vec3 p = T_cw * p_w;
+  if (p.z() <= 0.0) return {std::numeric_limits<double>::infinity(), 0.0, false};
+  const double inv_z = 1.0 / p.z();
+  const double u = cam.fx * p.x() * inv_z + cam.cx;
+  const double eu = obs.u - u, ev = obs.v - (cam.fy * p.y() * inv_z + cam.cy);
+  const double pixel2 = eu * eu + ev * ev;
+  double e2 = pixel2;
+  if (obs.u_right >= 0.0) {
+    const double er = obs.u_right - (u - cam.bf * inv_z);
+    e2 += er * er;
+  }
+  return {e2 * obs.inv_sigma2, pixel2, true};
+}
+
+std::vector<uint8_t> classify(const BaProblem& problem) {
+  std::vector<uint8_t> outlier(problem.observations.size(), 0);
+  for (size_t i = 0; i < problem.observations.size(); ++i) {
+    const auto& obs = problem.observations[i];
+    const auto e = evaluate(obs, problem.camera, problem.keyframes[obs.keyframe].T_camera_world,
+                            problem.points[obs.point].p_world);
+    const double threshold = obs.u_right >= 0.0 ? kChi2Stereo : kChi2Mono;
+    outlier[i] = !e.in_front || e.chi2 > threshold;
+  }
+  return outlier;
+}
+
+void solve(BaProblem& problem, const BaOptions& options, int iterations, bool robust,
+           const std::vector<uint8_t>& skip) {
+  std::vector<PoseBlock> poses;
+  poses.reserve(problem.keyframes.size());
+  for (const auto& kf : problem.keyframes) poses.push_back(toBlock(kf.T_camera_world));
+  std::vector<Vec3> points;
+  points.reserve(problem.points.size());
+  for (const auto& p : problem.points) points.push_back(p.p_world);
+
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem ceres_problem(problem_options);
+  ceres::HuberLoss huber_mono(std::sqrt(kChi2Mono));
+  ceres::HuberLoss huber_stereo(std::sqrt(kChi2Stereo));
+  ceres::QuaternionManifold quaternion_manifold;
+  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+  std::vector<uint8_t> pose_used(poses.size(), 0), point_used(points.size(), 0);
+  for (size_t i = 0; i < problem.observations.size(); ++i) {
+    if (!skip.empty() && skip[i]) continue;
+    const auto& obs = problem.observations[i];
+    const bool stereo = obs.u_right >= 0.0;
+    ceres::CostFunction* cost =
+        stereo ? static_cast<ceres::CostFunction*>(
+                     new ceres::AutoDiffCostFunction<BaCost, 3, 4, 3, 3>(new BaCost(obs, problem.camera)))
+               : new ceres::AutoDiffCostFunction<BaCost, 2, 4, 3, 3>(new BaCost(obs, problem.camera));
+    ceres::LossFunction* loss = robust ? (stereo ? &huber_stereo : static_cast<ceres::LossFunction*>(&huber_mono)) : nullptr;
+    PoseBlock& pose = poses[obs.keyframe];
+    ceres_problem.AddResidualBlock(cost, loss, pose.q, pose.t, points[obs.point].data());
+    if (!pose_used[obs.keyframe]) {
+      pose_used[obs.keyframe] = 1;
+      ceres_problem.SetManifold(pose.q, &quaternion_manifold);
+      if (problem.keyframes[obs.keyframe].fixed) {
+        ceres_problem.SetParameterBlockConstant(pose.q);
+        ceres_problem.SetParameterBlockConstant(pose.t);
+      }
+      ordering->AddElementToGroup(pose.q, 1);
+      ordering->AddElementToGroup(pose.t, 1);
+    }
+    if (!point_used[obs.point]) {
+      point_used[obs.point] = 1;
+      ordering->AddElementToGroup(points[obs.point].data(), 0);
+    }
+  }
+  if (ceres_problem.NumResidualBlocks() == 0) return;
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type =
+      options.linear_solver == "dense_schur" ? ceres::DENSE_SCHUR : ceres::SPARSE_SCHUR;
+  solver_options.linear_solver_ordering = ordering;
+  solver_options.max_num_iterations = iterations;
+  solver_options.num_threads = 1;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &ceres_problem, &summary);
+
+  for (size_t k = 0; k < poses.size(); ++k) {
+    if (pose_used[k] && !problem.keyframes[k].fixed) problem.keyframes[k].T_camera_world = fromBlock(poses[k]);
+  }
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (point_used[k]) problem.points[k].p_world = points[k];
+  }
+}
+
+}  // namespace
+
+double reprojectionRms(const BaProblem& problem, const std::vector<uint8_t>& skip) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < problem.observations.size(); ++i) {
+    if (!skip.empty() && skip[i]) continue;
+    const auto& obs = problem.observations[i];
+    const auto e = evaluate(obs, problem.camera, problem.keyframes[obs.keyframe].T_camera_world,
+                            problem.points[obs.point].p_world);
+    if (!e.in_front) continue;
+    sum += e.pixel2;
+    ++count;
+  }
+  return count ? std::sqrt(sum / count) : 0.0;
+}
+
+BaResult bundleAdjust(BaProblem& problem, const BaOptions& options) {
+  BaResult result;
+  result.initial_rms_px = reprojectionRms(problem);
+  solve(problem, options, options.iterations_first, /*robust=*/true, {});
+  // ORB-SLAM2: drop the observations that are still outliers, refine the rest without the
+  // robust loss, then report which observations remain outliers.
+  const auto first_outliers = classify(problem);
+  if (options.iterations_second > 0) solve(problem, options, options.iterations_second, false, first_outliers);
+  result.outlier = classify(problem);
+  result.final_rms_px = reprojectionRms(problem, result.outlier);
+  return result;
+}
+
+}  // namespace dynanav

@@ -1,0 +1,117 @@
+#include "slam/frame_tracker.hpp"
+
+#include "slam/matcher.hpp"
+#include "slam/pose_optimizer.hpp"
+
+namespace dynanav {
+
+int optimizeFramePose(Frame& frame, const TrackingConfig& config) {
+  const Features& f = frame.features;
+  const PinholeCamera& cam = *f.camera;
+  std::vector<PoseObservation> observations;
+  std::vector<int> keypoint_of;
+  for (int i = 0; i < frame.size(); ++i) {
+    const MapPointPtr& point = frame.map_points[i];
+    frame.outlier[i] = 0;
+    if (!point) continue;
+    PoseObservation obs;
+    obs.p_world = point->p_world;
+    obs.u = f.points[i].x;
+    obs.v = f.points[i].y;
+    obs.u_right = f.u_right[i];
+    obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
+    observations.push_back(obs);
+    keypoint_of.push_back(i);
+  }
+  const PoseCamera camera{cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
+  PoseOptimizerOptions options;
+  options.rounds = config.pose_rounds;
+  options.iterations_per_round = config.pose_iterations;
+  std::vector<uint8_t> outlier;
+  const int inliers = optimizePose(observations, camera, options, frame.T_camera_world, outlier);
+  for (size_t k = 0; k < keypoint_of.size(); ++k) frame.outlier[keypoint_of[k]] = outlier[k];
+  return inliers;
+}
+
+int discardOutliers(Frame& frame) {
+  int map_matches = 0;
+  for (int i = 0; i < frame.size(); ++i) {
+    if (!frame.map_points[i]) continue;
+    if (frame.outlier[i]) {
+      frame.map_points[i].reset();
+      frame.outlier[i] = 0;
+    } else if (frame.map_points[i]->numObservations() > 0) {
+      ++map_matches;
+    }
+  }
+  return map_matches;
+}
+
+bool trackWithMotionModel(Frame& current, const Frame& last, const SE3& T_current_last,
+                          const TrackingConfig& config) {
+  current.T_camera_world = orthonormalized(T_current_last * last.T_camera_world);
+  current.clearMatches();
+  int matches = matcher::matchLastFrame(current, last, config.motion_search_radius_px, true);
+  if (matches < config.motion_min_matches) {  // retry with a wider window
+    current.clearMatches();
+    matches = matcher::matchLastFrame(current, last, 2.0f * config.motion_search_radius_px, true);
+  }
+  if (matches < config.motion_min_matches) return false;
+  optimizeFramePose(current, config);
+  return discardOutliers(current) >= config.min_map_matches;
+}
+
+bool trackReferenceKeyFrame(Frame& current, const KeyFrame& reference, const SE3& initial_pose,
+                            const TrackingConfig& config) {
+  current.clearMatches();
+  const int matches = matcher::matchKeyFrame(reference, current, 0.7f, true);
+  if (matches < config.reference_min_matches) return false;
+  current.T_camera_world = initial_pose;
+  optimizeFramePose(current, config);
+  return discardOutliers(current) >= config.min_map_matches;
+}
+
+int trackLocalMap(Frame& frame, const std::map<uint64_t, KeyFramePtr>& keyframes,
+                  const TrackingConfig& config, LocalMap& local) {
+  updateLocalMap(frame, keyframes, config.max_local_keyframes, local);
+  // Points already matched count as seen; the others are searched where they project.
+  for (auto& point : frame.map_points) {
+    if (!point) continue;
+    if (point->bad) {
+      point.reset();
+      continue;
+    }
+    ++point->visible;
+    point->last_seen_frame = frame.id;
+    point->track_in_view = false;
+  }
+  const Vec3 center = frame.center();
+  int to_match = 0;
+  for (const auto& point : local.points) {
+    if (point->last_seen_frame == frame.id || point->bad) continue;
+    if (prepareProjection(frame, center, *point)) {
+      ++point->visible;
+      ++to_match;
+    }
+  }
+  if (to_match > 0) {
+    matcher::matchLocalPoints(frame, local.points, static_cast<float>(config.local_search_radius_factor),
+                              static_cast<float>(config.local_nn_ratio));
+  }
+  optimizeFramePose(frame, config);
+  int inliers = 0;
+  for (int i = 0; i < frame.size(); ++i) {
+    const MapPointPtr& point = frame.map_points[i];
+    if (!point) continue;
+    if (frame.outlier[i]) {
+      frame.map_points[i].reset();
+      frame.outlier[i] = 0;
+      continue;
+    }
+    ++point->found;
+    if (point->numObservations() > 0) ++inliers;
+  }
+  return inliers;
+}
+
+}  // namespace dynanav

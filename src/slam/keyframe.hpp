@@ -1,0 +1,74 @@
+#pragma once
+// A keyframe (ORB-SLAM2 KeyFrame): the frame's features, its pose, the map points its keypoints
+// observe, and its place in the covisibility graph and spanning tree. Graph links are raw
+// pointers ordered by keyframe id; the Map owns keyframes (shared_ptr) and unlinks culled ones.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "core/se3.hpp"
+#include "slam/features.hpp"
+#include "slam/map_point.hpp"
+
+namespace dynanav {
+
+class KeyFrame {
+ public:
+  KeyFrame(uint64_t id, uint64_t frame_id, double stamp_s, Features features,
+           const SE3& T_camera_world, std::vector<MapPointPtr> map_points);
+
+  const uint64_t id;
+  const uint64_t frame_id;
+  const double stamp_s;
+  const Features features;
+  std::vector<MapPointPtr> map_points;  ///< per keypoint, nullptr where none
+
+  [[nodiscard]] const SE3& T_camera_world() const { return T_camera_world_; }
+  [[nodiscard]] const SE3& T_world_camera() const { return T_world_camera_; }
+  [[nodiscard]] Vec3 center() const { return T_world_camera_.translation(); }
+  void setPose(const SE3& T_camera_world) {
+    T_camera_world_ = T_camera_world;
+    T_world_camera_ = T_camera_world.inverse();
+  }
+
+  // Covisibility graph (ORB-SLAM2 UpdateConnections): weight = shared map points.
+  std::map<KeyFrame*, int, KeyFrameIdLess> connections;
+  std::vector<KeyFrame*> ordered_covisible;  ///< by weight desc, then id
+  std::vector<int> ordered_weights;
+  KeyFrame* parent = nullptr;  ///< spanning tree
+  std::set<KeyFrame*, KeyFrameIdLess> children;
+  bool bad = false;
+
+  // Scratch for tracking and local mapping.
+  uint64_t local_for_frame = UINT64_MAX;
+  uint64_t ba_local_for_keyframe = UINT64_MAX;
+  uint64_t ba_fixed_for_keyframe = UINT64_MAX;
+  uint64_t fuse_target_keyframe = UINT64_MAX;
+
+  /// Recomputes this keyframe's covisibility links from its map points and updates the other
+  /// side; on the first call also picks the spanning-tree parent (strongest link).
+  void updateConnections(int min_weight);
+  void addConnection(KeyFrame* other, int weight);
+  void eraseConnection(KeyFrame* other);
+  [[nodiscard]] std::vector<KeyFrame*> bestCovisible(int n) const;
+  [[nodiscard]] std::vector<KeyFrame*> covisibleAtLeast(int weight) const;
+  /// Map points observed by at least `min_observations` keyframes.
+  [[nodiscard]] int trackedMapPoints(int min_observations) const;
+  void eraseMapPoint(int index) { map_points[index].reset(); }
+  void eraseMapPoint(const MapPoint* point);
+  /// Marks the keyframe bad: unlinks it from the graph and from its points' observations, and
+  /// re-parents its children. Keyframe 0 is never culled.
+  void setBad();
+
+ private:
+  void sortConnections();
+  SE3 T_camera_world_;
+  SE3 T_world_camera_;
+  bool first_connection_ = true;
+};
+
+using KeyFramePtr = std::shared_ptr<KeyFrame>;
+
+}  // namespace dynanav

@@ -1,0 +1,51 @@
+#pragma once
+// The map: every keyframe and map point, ordered by id (deterministic iteration), plus the id
+// counters. One mutex guards it in threaded mode: tracking holds it while it tracks a frame,
+// local mapping while it changes the map (its bundle adjustment solves on a copy, unlocked).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "slam/keyframe.hpp"
+#include "slam/map_point.hpp"
+
+namespace dynanav {
+
+class Map {
+ public:
+  MapPointPtr createPoint(const Vec3& p_world, KeyFrame* reference) {
+    auto p = std::make_shared<MapPoint>(next_point_id_++, p_world, reference);
+    points_.emplace(p->id, p);
+    return p;
+  }
+  /// A map point that is not stored in the map (tracking's temporary visual-odometry points).
+  MapPointPtr createTemporaryPoint(const Vec3& p_world) {
+    return std::make_shared<MapPoint>(UINT64_MAX, p_world, nullptr);
+  }
+  uint64_t nextKeyFrameId() const { return next_keyframe_id_; }
+  KeyFramePtr addKeyFrame(KeyFramePtr kf) {
+    next_keyframe_id_ = std::max(next_keyframe_id_, kf->id + 1);
+    keyframes_.emplace(kf->id, kf);
+    return kf;
+  }
+  /// Drops bad keyframes and points from the containers (they stay alive while referenced).
+  void removeBad() {
+    std::erase_if(points_, [](const auto& kv) { return kv.second->bad; });
+    std::erase_if(keyframes_, [](const auto& kv) { return kv.second->bad; });
+  }
+  [[nodiscard]] const std::map<uint64_t, KeyFramePtr>& keyframes() const { return keyframes_; }
+  [[nodiscard]] const std::map<uint64_t, MapPointPtr>& points() const { return points_; }
+  [[nodiscard]] size_t numKeyFrames() const { return keyframes_.size(); }
+  [[nodiscard]] size_t numPoints() const { return points_.size(); }
+  std::mutex& mutex() { return mutex_; }
+
+ private:
+  std::map<uint64_t, KeyFramePtr> keyframes_;
+  std::map<uint64_t, MapPointPtr> points_;
+  uint64_t next_point_id_ = 0;
+  uint64_t next_keyframe_id_ = 0;
+  std::mutex mutex_;
+};
+
+}  // namespace dynanav

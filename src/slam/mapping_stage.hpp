@@ -1,0 +1,50 @@
+#pragma once
+// Local mapping as a pipeline stage fed with keyframes by tracking. Deterministic mode: keyframes
+// wait in `pending` and run inline when the caller says so (same thread, same order every run).
+// Threaded mode: a bounded queue feeds one worker thread; insert() blocks while the queue is
+// full (visible back-pressure instead of unbounded growth); finish() drains and joins.
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+#include "core/config/mapping.hpp"
+#include "core/timer.hpp"
+#include "slam/local_mapper.hpp"
+
+namespace dynanav {
+
+class MappingStage {
+ public:
+  MappingStage(Map& map, const MappingConfig& config, bool threaded, StageTimers* timers);
+  ~MappingStage();
+  MappingStage(const MappingStage&) = delete;
+  MappingStage& operator=(const MappingStage&) = delete;
+
+  void insert(KeyFramePtr keyframe);
+  /// Deterministic mode: processes the waiting keyframes now. Threaded mode: nothing.
+  void runPending();
+  /// No keyframe waiting or being processed.
+  [[nodiscard]] bool idle() const;
+  /// The queue has room for another keyframe.
+  [[nodiscard]] bool accepts() const;
+  /// Processes everything still queued and stops the worker (idempotent).
+  void finish();
+  /// Counters of the local mapper (read after finish() in threaded mode).
+  [[nodiscard]] LocalMapperStats stats() const { return mapper_.stats(); }
+
+ private:
+  void workerLoop();
+
+  LocalMapper mapper_;
+  const bool threaded_;
+  const size_t capacity_;
+  mutable std::mutex queue_mutex_;
+  std::condition_variable queue_changed_;
+  std::deque<KeyFramePtr> queue_;
+  bool busy_ = false;
+  bool stopping_ = false;
+  std::thread worker_;
+};
+
+}  // namespace dynanav

@@ -1,0 +1,163 @@
+#include "slam/tracker.hpp"
+
+#include <algorithm>
+#include <mutex>
+
+#include <spdlog/spdlog.h>
+
+#include "slam/frame_tracker.hpp"
+#include "slam/keyframe_inserter.hpp"
+#include "slam/pose_optimizer.hpp"
+
+namespace dynanav {
+
+const char* toString(TrackingState state) {
+  switch (state) {
+    case TrackingState::kNotInitialised: return "not_initialised";
+    case TrackingState::kOk: return "ok";
+    case TrackingState::kLost: return "lost";
+  }
+  return "?";
+}
+
+bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
+  const Features& f = frame.features;
+  int with_depth = 0;
+  for (int i = 0; i < frame.size(); ++i) with_depth += f.hasDepth(i) && f.usable[i];
+  if (with_depth < config_.init_min_depth_features) return false;
+  // The first frame defines the world frame (DESIGN.md §2); every keypoint with depth seeds a point.
+  frame.T_camera_world = SE3::Identity();
+  frame.clearMatches();
+  auto kf = std::make_shared<KeyFrame>(map_.nextKeyFrameId(), frame.id, frame.stamp_s, f,
+                                       frame.T_camera_world, frame.map_points);
+  map_.addKeyFrame(kf);
+  for (int i = 0; i < frame.size(); ++i) {
+    if (!f.hasDepth(i) || !f.usable[i]) continue;
+    auto point = map_.createPoint(f.backproject(i), kf.get());
+    point->addObservation(kf.get(), i);
+    kf->map_points[i] = point;
+    frame.map_points[i] = point;
+    point->updateDescriptor();
+    point->updateNormalAndDepth(*f.scales);
+  }
+  reference_ = kf;
+  local_.keyframes = {kf};
+  local_.points.clear();
+  for (const auto& p : kf->map_points)
+    if (p) local_.points.push_back(p);
+  local_.reference = kf;
+  last_keyframe_frame_id_ = frame.id;
+  outcome.new_keyframe = kf;
+  outcome.inliers = with_depth;
+  return true;
+}
+
+void Tracker::updateLastFrame() {
+  if (!last_reference_) return;
+  last_.T_camera_world = orthonormalized(T_last_reference_ * last_reference_->T_camera_world());
+  if (last_is_keyframe_) return;
+  const Features& f = last_.features;
+  std::vector<std::pair<float, int>> by_depth;
+  for (int i = 0; i < last_.size(); ++i)
+    if (f.hasDepth(i) && f.usable[i]) by_depth.emplace_back(f.depth_m[i], i);
+  std::sort(by_depth.begin(), by_depth.end());
+  const SE3 T_wc = last_.T_camera_world.inverse();
+  const double close_depth = f.camera->closeDepthThreshold();
+  int points = 0;
+  for (const auto& [depth, i] : by_depth) {
+    const MapPointPtr& p = last_.map_points[i];
+    if (!p || p->numObservations() < 1) {
+      auto temporary = map_.createTemporaryPoint(T_wc * f.backproject(i));
+      temporary->descriptor = f.descriptors.row(i);
+      last_.map_points[i] = temporary;
+      last_.outlier[i] = 0;
+    }
+    ++points;
+    if (depth > close_depth && points > config_.new_points_min) break;
+  }
+}
+
+void Tracker::rememberAsLast(const Frame& frame) {
+  last_ = frame;
+  last_reference_ = reference_;
+  T_last_reference_ = frame.T_camera_world * reference_->T_world_camera();
+}
+
+TrackOutcome Tracker::track(Frame& frame) {
+  std::unique_lock lock(map_.mutex());
+  TrackOutcome outcome;
+  if (state_ == TrackingState::kNotInitialised) {
+    if (initialise(frame, outcome)) {
+      state_ = TrackingState::kOk;
+      last_is_keyframe_ = true;
+      rememberAsLast(frame);
+      lock.unlock();  // never wait for queue room while holding the map
+      mapping_.insert(outcome.new_keyframe);
+    }
+    outcome.state = state_;
+    return outcome;
+  }
+  if (reference_->bad) {  // culled by local mapping: fall back to the newest keyframe
+    reference_ = map_.keyframes().rbegin()->second;
+  }
+  const bool was_lost = state_ == TrackingState::kLost;
+  bool ok = false;
+  if (!was_lost) {
+    updateLastFrame();
+    if (has_velocity_) ok = trackWithMotionModel(frame, last_, velocity_, config_);
+    if (!ok) ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
+  } else {
+    ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
+  }
+  spdlog::debug("frame {}: initial pose {} ({} matches)", frame.id, ok ? "ok" : "failed",
+                std::count_if(frame.map_points.begin(), frame.map_points.end(), [](const auto& p) { return p != nullptr; }));
+  if (ok) {
+    outcome.inliers = trackLocalMap(frame, map_.keyframes(), config_, local_);
+    spdlog::debug("frame {}: local map {} kfs {} points -> {} inliers", frame.id, local_.keyframes.size(),
+                  local_.points.size(), outcome.inliers);
+    // After a loss ORB-SLAM2 asks for more support before trusting the pose again.
+    const int needed = was_lost ? 50 : config_.local_map_min_inliers;
+    ok = outcome.inliers >= needed;
+  }
+  if (!ok) {
+    state_ = TrackingState::kLost;
+    has_velocity_ = false;
+    frame.clearMatches();
+    outcome.state = state_;
+    return outcome;
+  }
+  state_ = TrackingState::kOk;
+  outcome.recovered = was_lost;
+  if (!was_lost) {
+    velocity_ = orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse());
+    has_velocity_ = true;
+  }
+  if (local_.reference) reference_ = local_.reference;
+  // Temporary visual-odometry points served the motion model only.
+  for (int i = 0; i < frame.size(); ++i) {
+    if (frame.map_points[i] && frame.map_points[i]->numObservations() < 1) {
+      frame.map_points[i].reset();
+      frame.outlier[i] = 0;
+    }
+  }
+  KeyFrameDecisionInput decision;
+  decision.frames_since_last_keyframe = frame.id - last_keyframe_frame_id_;
+  decision.matches_inliers = outcome.inliers;
+  decision.mapper_idle = mapping_.idle();
+  decision.mapper_accepts = mapping_.accepts();
+  decision.map_keyframes = map_.numKeyFrames();
+  last_is_keyframe_ = false;
+  if (!was_lost && needNewKeyFrame(frame, *reference_, decision, config_)) {
+    outcome.new_keyframe = createKeyFrame(frame, map_, config_);
+    reference_ = outcome.new_keyframe;
+    last_keyframe_frame_id_ = frame.id;
+    last_is_keyframe_ = true;
+  }
+  rememberAsLast(frame);
+  lock.unlock();
+  if (outcome.new_keyframe) mapping_.insert(outcome.new_keyframe);
+  outcome.state = state_;
+  return outcome;
+}
+
+}  // namespace dynanav

@@ -1,0 +1,60 @@
+#pragma once
+// Tracking as a state machine (ORB-SLAM2 Tracking::Track for RGB-D, split into small units):
+// initialise the map from the first frame with enough depth; then pose each frame by the motion
+// model (or the reference keyframe), refine it against the local map, and hand new keyframes to
+// local mapping. Loss is a state: lost frames are reported, and each later frame tries to
+// recover against the last reference keyframe (full relocalisation is a later issue).
+#include <cstdint>
+
+#include "core/config/tracking.hpp"
+#include "slam/frame.hpp"
+#include "slam/local_map.hpp"
+#include "slam/map.hpp"
+#include "slam/mapping_stage.hpp"
+
+namespace dynanav {
+
+enum class TrackingState { kNotInitialised, kOk, kLost };
+const char* toString(TrackingState state);
+
+struct TrackOutcome {
+  TrackingState state = TrackingState::kNotInitialised;
+  KeyFramePtr new_keyframe;  ///< set when this frame became a keyframe
+  int inliers = 0;           ///< local-map inliers (or map points created at initialisation)
+  bool recovered = false;    ///< this frame ended a loss
+};
+
+class Tracker {
+ public:
+  Tracker(Map& map, MappingStage& mapping, const TrackingConfig& config)
+      : map_(map), mapping_(mapping), config_(config) {}
+
+  /// Tracks one frame (its features set, id increasing). Holds the map lock while it runs.
+  TrackOutcome track(Frame& frame);
+
+  [[nodiscard]] TrackingState state() const { return state_; }
+  [[nodiscard]] const LocalMap& localMap() const { return local_; }
+
+ private:
+  bool initialise(Frame& frame, TrackOutcome& outcome);
+  /// Re-anchors the last frame on its (possibly optimised) reference keyframe and gives it
+  /// temporary points from depth so the motion model has close points to match.
+  void updateLastFrame();
+  void rememberAsLast(const Frame& frame);
+
+  Map& map_;
+  MappingStage& mapping_;
+  TrackingConfig config_;
+  TrackingState state_ = TrackingState::kNotInitialised;
+  Frame last_;
+  KeyFramePtr last_reference_;
+  SE3 T_last_reference_ = SE3::Identity();  ///< last frame pose relative to its reference
+  bool last_is_keyframe_ = false;
+  SE3 velocity_ = SE3::Identity();          ///< T_current_last of the last tracked pair
+  bool has_velocity_ = false;
+  KeyFramePtr reference_;
+  LocalMap local_;
+  uint64_t last_keyframe_frame_id_ = 0;
+};
+
+}  // namespace dynanav
