@@ -19,9 +19,16 @@ Instances paintObjects(std::vector<MaskedObject> objects, const cv::Mat& depth_m
     if (!depth_m.empty()) depth[i] = depthMode(depth_m(objects[i].record.box), objects[i].mask_in_box, bin_m);
   std::vector<size_t> order(objects.size());
   std::iota(order.begin(), order.end(), 0);
-  // Unknown depth (0) counts as farthest; ties keep input order (deterministic).
+  // Masks cut from depth alone (objects, fall-backs) go first: they also take whatever else
+  // lies at their depth in the box (a person's legs in front of a chair), so a model-made
+  // person mask overrides them. Within each group far to near; unknown depth (0) counts as
+  // farthest; ties keep input order (deterministic).
+  auto fromDepth = [&](size_t i) { return objects[i].record.mask_source == "depth"; };
   auto key = [&](size_t i) { return depth[i] > 0.f ? depth[i] : 1e9f; };
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) > key(b); });
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (fromDepth(a) != fromDepth(b)) return fromDepth(a);
+    return key(a) > key(b);
+  });
 
   Instances out = Instances::none(size);
   for (size_t i = 0; i < objects.size(); ++i) objects[i].record.id = uint16_t(i + 1);

@@ -16,9 +16,10 @@ struct MaskedObject {
   cv::Mat mask_in_box;
 };
 
-/// Paints objects into one label image, far ones first so that nearer objects occlude them
-/// (depth order from each mask's depth mode; objects without depth go first). Ids 1..N in
-/// input order; objects whose mask is empty are dropped.
+/// Paints objects into one label image: masks cut from depth alone first, then model-made
+/// masks; within each group far ones first so that nearer objects occlude them (depth order
+/// from each mask's depth mode; objects without depth go first). Ids 1..N in input order;
+/// objects whose mask ends up empty are dropped.
 Instances paintObjects(std::vector<MaskedObject> objects, const cv::Mat& depth_m, cv::Size size,
                        double bin_m);
 
