@@ -19,7 +19,7 @@ struct TrainOptions {
   std::vector<std::string> inputs;
   std::string out;
   int branching = 10;
-  int levels = 5;
+  int levels = 6;
   int max_images = 0;
   int video_step = 10;
   int features = 1000;
