@@ -11,6 +11,7 @@
 #include "core/se3.hpp"
 #include "slam/features.hpp"
 #include "slam/map_point.hpp"
+#include "slam/vocabulary/bow_vector.hpp"
 
 namespace dynanav {
 
@@ -40,6 +41,13 @@ class KeyFrame {
   KeyFrame* parent = nullptr;  ///< spanning tree
   std::set<KeyFrame*, KeyFrameIdLess> children;
   bool bad = false;
+
+  // Place recognition (issue 4, loop/relocalisation): bag of words and direct index, computed
+  // once when the keyframe enters the keyframe database; loop edges join the two keyframes of a
+  // closed loop in the essential graph.
+  BowVector bow;
+  FeatureVector bow_features;
+  std::set<KeyFrame*, KeyFrameIdLess> loop_edges;
 
   // Scratch for tracking and local mapping.
   uint64_t local_for_frame = UINT64_MAX;
