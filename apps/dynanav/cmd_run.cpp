@@ -19,6 +19,9 @@ struct RunFlags {
   std::string config_path;
   std::string dynamic;
   std::string blackout;
+  std::string segmenter;      // issue 7 (dynamics): segmenter, models and segmentation rate
+  std::string models;
+  int segment_every = 0;
   bool deterministic = false;
   bool realtime = false;
   int max_frames = 0;
@@ -31,6 +34,10 @@ int runCommand(const RunFlags& flags) {
   options.out_dir = flags.out_dir;
   if (!flags.config_path.empty()) options.config = Config::load(flags.config_path);
   if (!flags.dynamic.empty()) options.config.run.dynamic = flags.dynamic == "on";
+  if (!flags.segmenter.empty()) options.config.run.segmenter = flags.segmenter;  // issue 7
+  if (!flags.models.empty()) options.config.perception.models_dir = flags.models;
+  if (flags.segment_every < 0) throw InputError("", "--segment-every must be >= 1");
+  if (flags.segment_every > 0) options.config.run.segment_every = flags.segment_every;
   if (flags.deterministic && flags.realtime)
     throw InputError("", "--deterministic and --realtime exclude each other");
   if (flags.deterministic) options.config.run.deterministic = true;
@@ -70,6 +77,10 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_option("--config", flags->config_path, "YAML config (unknown keys are errors)");
   sub->add_option("--dynamic", flags->dynamic, "on|off: handle moving objects (off = plain SLAM baseline)")
       ->check(CLI::IsMember({"on", "off"}));
+  sub->add_option("--segmenter", flags->segmenter, "auto|dnn|hog|masks|none: how people and objects are found")
+      ->check(CLI::IsMember({"auto", "dnn", "hog", "masks", "none"}));
+  sub->add_option("--models", flags->models, "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
+  sub->add_option("--segment-every", flags->segment_every, "segment every k-th frame, propagate masks between");
   sub->add_flag("--deterministic", flags->deterministic,
                 "single thread, local mapping inline: identical results run to run (default)");
   sub->add_flag("--realtime", flags->realtime, "local mapping in its own thread beside tracking");
