@@ -10,6 +10,7 @@
 //   build/<dir>/bin/bench_perception [--benchmark_filter=Detector]
 // DYNANAV_BENCH_FRAMES=N limits the frames (default: all 500).
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
@@ -43,6 +44,15 @@ double processCpuMs() {
   return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
 }
 
+/// As `dynanav segment` does: keep freed frame-sized buffers in the heap (fresh pages cost
+/// page faults; see docs/perception.md). DYNANAV_BENCH_DEFAULT_MALLOC=1 keeps glibc's defaults.
+const bool kAllocatorTuned = [] {
+  if (const char* env = std::getenv("DYNANAV_BENCH_DEFAULT_MALLOC"); env && std::string(env) == "1") return false;
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 128 << 20);
+  return true;
+}();
+
 fs::path bonnDir() { return fs::path(DYNANAV_SHARED_DIR) / "data" / "rgbd_bonn_crowd"; }
 
 fs::path modelsDir() { return findModelsDir("", dnnModelFiles(true)); }
@@ -63,6 +73,7 @@ class Samples {
       if (step == "frame") state.counters["frame_p90"] = v[std::min(v.size() - 1, v.size() * 9 / 10)];
     }
     if (samples_.count("frame")) state.counters["frames"] = double(samples_["frame"].size());
+    state.counters["malloc_tuned"] = kAllocatorTuned ? 1 : 0;
   }
 
  private:

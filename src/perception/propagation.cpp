@@ -35,22 +35,21 @@ Instances MaskPropagator::propagate(const RgbdFrame& frame) {
     setReference(frame, Instances::none(frame.bgr.size()));  // nothing to carry
     return reference_;
   }
-  cv::Mat flow_small;  // new frame → reference: where each new pixel came from
-  dis_->calc(grey, reference_grey_, flow_small);
+  // Flow from the new frame to the reference: where each new pixel came from.
+  dis_->calc(grey, reference_grey_, flow_small_);
   timing_.flow_ms = msSince(t0);
 
   t0 = Clock::now();
-  cv::Mat flow;
-  cv::resize(flow_small, flow, frame.bgr.size(), 0, 0, cv::INTER_LINEAR);
-  flow *= 1.0 / (double(grey.cols) / double(frame.bgr.cols));
-  cv::Mat map(flow.size(), CV_32FC2);
-  for (int y = 0; y < map.rows; ++y) {
-    auto* m = map.ptr<cv::Vec2f>(y);
-    const auto* f = flow.ptr<cv::Vec2f>(y);
-    for (int x = 0; x < map.cols; ++x) m[x] = {float(x) + f[x][0], float(y) + f[x][1]};
+  cv::resize(flow_small_, flow_, frame.bgr.size(), 0, 0, cv::INTER_LINEAR);
+  const float to_full = float(frame.bgr.cols) / float(grey.cols);
+  map_.create(flow_.size(), CV_32FC2);
+  for (int y = 0; y < map_.rows; ++y) {
+    auto* m = map_.ptr<cv::Vec2f>(y);
+    const auto* f = flow_.ptr<cv::Vec2f>(y);
+    for (int x = 0; x < map_.cols; ++x) m[x] = {float(x) + to_full * f[x][0], float(y) + to_full * f[x][1]};
   }
   Instances out;
-  cv::remap(reference_.labels, out.labels, map, cv::Mat(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar());
+  cv::remap(reference_.labels, out.labels, map_, cv::Mat(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar());
   out.items = reference_.items;
   tightenToLabels(out);
   timing_.warp_ms = msSince(t0);
@@ -61,7 +60,7 @@ Instances MaskPropagator::propagate(const RgbdFrame& frame) {
     const cv::Mat mask = out.labels(item.box) == item.id;
     if (item.keypoints) {
       // Keypoints move with the mean flow of their instance (pixel = source - flow).
-      const cv::Scalar mean_flow = cv::mean(flow(item.box), mask);
+      const cv::Scalar mean_flow = cv::mean(flow_(item.box), mask) * double(to_full);
       for (Keypoint& k : item.keypoints->points)
         k.pixel -= cv::Point2f(float(mean_flow[0]), float(mean_flow[1]));
     }

@@ -35,6 +35,7 @@ class MaskPropagator {
   PerceptionConfig config_;
   cv::Ptr<cv::DISOpticalFlow> dis_;
   cv::Mat reference_grey_;  // at config_.flow_scale
+  cv::Mat flow_small_, flow_, map_;  // reused: fresh multi-MB buffers cost page faults per frame
   Instances reference_;
   PropagationTiming timing_;
 };
