@@ -222,20 +222,37 @@ void decorateWall(cv::Mat& wall, float tpm, Rng& rng, const PhotoLibrary& photos
 
 void decorateFloor(cv::Mat& floor, float tpm, Rng& rng) {
   const float area_m2 = float(floor.total()) / (tpm * tpm);
-  for (int i = 0; i < int(area_m2 * 0.8f); ++i) {  // papers, stickers, tape marks
-    const cv::Point c(rng.uniformInt(0, floor.cols - 1), rng.uniformInt(0, floor.rows - 1));
-    const cv::Size2f s(float(rng.uniform(0.08, 0.3)) * tpm, float(rng.uniform(0.05, 0.25)) * tpm);
-    const cv::RotatedRect rr(c, s, float(rng.uniform(0, 180)));
-    cv::Point2f corners[4];
-    rr.points(corners);
-    std::vector<cv::Point> pts(corners, corners + 4);
-    cv::fillConvexPoly(floor, pts, rng.chance(0.5) ? cv::Scalar::all(rng.uniformInt(200, 255)) : randomColour(rng), cv::LINE_AA);
-  }
   for (int i = 0; i < int(area_m2 / 12.0f) + 1; ++i) {  // rugs
     const cv::Size s(int(rng.uniform(1.0, 2.0) * tpm), int(rng.uniform(0.7, 1.4) * tpm));
     cv::Mat rug = carpet(s, rng);
     cv::rectangle(rug, cv::Rect(0, 0, s.width, s.height), randomColour(rng), std::max(2, s.width / 25));
     paste(floor, rug, {rng.uniformInt(0, std::max(0, floor.cols - s.width)), rng.uniformInt(0, std::max(0, floor.rows - s.height))});
+  }
+  // Papers with print, stickers, tape crosses and stains: corners on the floor near the feet,
+  // where the depth sensor always has returns.
+  for (int i = 0; i < int(area_m2 * 3.0f); ++i) {
+    const cv::Point c(rng.uniformInt(0, floor.cols - 1), rng.uniformInt(0, floor.rows - 1));
+    const int kind = rng.uniformInt(0, 3);
+    if (kind == 0) {
+      const cv::Size s(int(rng.uniform(0.12, 0.3) * tpm), int(rng.uniform(0.1, 0.25) * tpm));
+      if (s.width < 8 || s.height < 8) continue;
+      cv::Mat paper(s, CV_8UC3, rng.chance(0.6) ? cv::Scalar::all(rng.uniformInt(215, 255)) : randomColour(rng, 120, 255));
+      textBlock(paper, cv::Rect(2, 2, s.width - 4, s.height - 4), s.width / 250.0, cv::Scalar::all(rng.uniformInt(0, 60)), rng);
+      if (rng.chance(0.5)) cv::rotate(paper, paper, cv::ROTATE_90_CLOCKWISE);
+      paste(floor, paper, c);
+    } else if (kind == 1) {
+      const int r = int(rng.uniform(0.02, 0.06) * tpm) + 1;
+      cv::circle(floor, c, r, randomColour(rng, 0, 255), cv::FILLED, cv::LINE_AA);
+      cv::circle(floor, c, r / 2, randomColour(rng, 0, 255), cv::FILLED, cv::LINE_AA);
+    } else if (kind == 2) {
+      const int len = int(rng.uniform(0.05, 0.15) * tpm) + 2, w = std::max(2, int(0.02f * tpm));
+      const cv::Scalar tape = rng.chance(0.5) ? cv::Scalar(0, 210, 255) : randomColour(rng, 0, 255);
+      cv::line(floor, c - cv::Point(len, 0), c + cv::Point(len, 0), tape, w);
+      cv::line(floor, c - cv::Point(0, len), c + cv::Point(0, len), tape, w);
+    } else {
+      const cv::Size axes(int(rng.uniform(0.02, 0.1) * tpm) + 1, int(rng.uniform(0.02, 0.08) * tpm) + 1);
+      cv::ellipse(floor, c, axes, rng.uniform(0, 180), 0, 360, cv::Scalar::all(rng.uniformInt(10, 60)), cv::FILLED, cv::LINE_AA);
+    }
   }
 }
 

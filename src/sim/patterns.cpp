@@ -13,16 +13,12 @@ namespace fs = std::filesystem;
 
 PhotoLibrary::PhotoLibrary(const fs::path& dir) {
   if (!fs::is_directory(dir)) return;
-  std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
     const auto ext = entry.path().extension().string();
-    if (ext == ".jpg" || ext == ".png") files.push_back(entry.path());
+    if (ext == ".jpg" || ext == ".png") files_.push_back(entry.path());
   }
-  std::sort(files.begin(), files.end());  // directory order is not deterministic
-  for (const auto& f : files) {
-    cv::Mat img = cv::imread(f.string(), cv::IMREAD_COLOR);
-    if (!img.empty() && img.cols >= 64 && img.rows >= 64) photos_.push_back(img);
-  }
+  std::sort(files_.begin(), files_.end());  // directory order is not deterministic
+  decoded_.resize(files_.size());
 }
 
 PhotoLibrary PhotoLibrary::systemDefault() {
@@ -30,7 +26,17 @@ PhotoLibrary PhotoLibrary::systemDefault() {
 }
 
 const cv::Mat& PhotoLibrary::pick(Rng& rng) const {
-  return photos_[size_t(rng.uniformInt(0, int(photos_.size()) - 1))];
+  static const cv::Mat kGrey(64, 64, CV_8UC3, cv::Scalar::all(128));
+  size_t i = size_t(rng.uniformInt(0, int(files_.size()) - 1));
+  // Unreadable or tiny files are skipped deterministically (the next file in order).
+  for (size_t tries = 0; tries < files_.size(); ++tries, i = (i + 1) % files_.size()) {
+    if (decoded_[i].empty()) {
+      cv::Mat img = cv::imread(files_[i].string(), cv::IMREAD_COLOR);
+      decoded_[i] = (img.empty() || img.cols < 64 || img.rows < 64) ? cv::Mat(1, 1, CV_8UC3) : img;
+    }
+    if (decoded_[i].cols >= 64) return decoded_[i];
+  }
+  return kGrey;
 }
 
 cv::Mat fractalNoise(cv::Size size, float cell, int octaves, Rng& rng) {
@@ -148,8 +154,8 @@ cv::Mat floorTiles(cv::Size size, float tpm, Rng& rng) {
 }
 
 cv::Mat carpet(cv::Size size, Rng& rng) {
-  cv::Mat img = tinted(fractalNoise(size, 40.0f, 5, rng), randomColour(rng, 60, 140), 55.0f);
-  for (int i = 0; i < size.area() / 20000; ++i) {  // woven motifs
+  cv::Mat img = tinted(fractalNoise(size, 40.0f, 5, rng), randomColour(rng, 60, 140), 70.0f);
+  for (int i = 0; i < size.area() / 6000; ++i) {  // woven motifs
     const cv::Point c(rng.uniformInt(0, size.width), rng.uniformInt(0, size.height));
     const int r = rng.uniformInt(6, 30);
     cv::rectangle(img, c - cv::Point(r, r), c + cv::Point(r, r), randomColour(rng), 2);

@@ -19,11 +19,13 @@ class PhotoLibrary {
   explicit PhotoLibrary(const std::filesystem::path& dir);
   /// The Debian opencv-doc data folder if it exists, else an empty library.
   static PhotoLibrary systemDefault();
-  [[nodiscard]] bool empty() const { return photos_.empty(); }
+  [[nodiscard]] bool empty() const { return files_.empty(); }
+  /// A photo chosen by `rng`, decoded on first use (a scene needs only a few of them).
   [[nodiscard]] const cv::Mat& pick(Rng& rng) const;
 
  private:
-  std::vector<cv::Mat> photos_;
+  std::vector<std::filesystem::path> files_;
+  mutable std::vector<cv::Mat> decoded_;
 };
 
 /// Smooth noise in [-1, 1] (CV_32F) with features about `cell` texels wide, `octaves` finer ones added.

@@ -29,8 +29,8 @@ class Rng {
   /// Uniform in [0, 1).
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  /// Uniform integer in [lo, hi] (inclusive).
-  int uniformInt(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }
+  /// Uniform integer in [lo, hi] (inclusive); lo when the range is empty.
+  int uniformInt(int lo, int hi) { return hi <= lo ? lo : lo + int(next() % uint64_t(hi - lo + 1)); }
   bool chance(double p) { return uniform() < p; }
   /// Standard normal sample (Box–Muller; one of the pair is discarded for simplicity).
   double normal() {

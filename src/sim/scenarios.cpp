@@ -21,7 +21,7 @@ struct Stage {
   std::unique_ptr<Scene> scene = std::make_unique<Scene>();
   Rng rng;
   WorldBuilder build;
-  Stage(uint64_t seed, const PhotoLibrary& photos) : rng(seed), build(scene->world, rng, photos) {}
+  Stage(uint64_t seed, const PhotoLibrary& photos, float tpm) : rng(seed), build(scene->world, rng, photos, tpm) {}
 
   Mover& person(uint16_t id, const Motion& motion) {
     scene->people.push_back(std::make_unique<Person>(scene->world, rng, build.texelsPerMetre()));
@@ -59,9 +59,9 @@ struct Stage {
 
 /// An office 7 x 9 m: desks behind cubicle partitions, shelves, a pillar, doors. Movers keep to
 /// the aisles; enough surfaces stay within the depth sensor's 4.5 m wherever the wearer looks.
-void furnishOffice(Stage& st) {
+void furnishOffice(Stage& st, bool pillar = true) {
   WorldBuilder& b = st.build;
-  b.room({0, 0}, {7, 9}, 2.8);
+  b.room({0, 0}, {7, 8}, 2.8);
   b.partition({1.5, 2.0}, kEast, 1.6);
   b.desk({0.4, 2.0}, kEast);
   b.chair({1.0, 2.0}, kWest);
@@ -69,37 +69,41 @@ void furnishOffice(Stage& st) {
   b.desk({6.6, 1.6}, kWest);
   b.desk({0.4, 3.8}, kEast);
   b.chair({1.1, 3.7}, kWest + 0.3);
-  b.pillar({4.9, 5.2}, 0.5);
+  if (pillar) b.pillar({4.9, 5.2}, 0.5);
+  b.partition({3.2, 7.3}, kSouth, 1.6);
   b.cabinet({0.23, 6.0}, kEast);
   b.plant({0.6, 6.95});
-  b.shelf({0.18, 8.0}, kEast, 1.2);
   b.shelf({6.82, 3.6}, kWest, 1.0);
   b.closedDoor({7.0, 5.3}, kWest);
-  b.desk({6.65, 7.2}, kWest);
-  b.bin({6.6, 8.4});
-  b.closedDoor({2.0, 9.0}, kSouth);
-  b.shelf({4.5, 8.82}, kSouth, 1.4);
+  b.desk({6.65, 7.35}, kWest);
+  b.closedDoor({1.2, 8.0}, kSouth);
+  b.shelf({4.8, 7.82}, kSouth, 1.4);
   b.closedDoor({1.5, 0.0}, kNorth);
   b.cabinet({4.5, 0.23}, kNorth);
 }
 
 std::unique_ptr<Scene> staticRoom(Stage& st) {
   WorldBuilder& b = st.build;
-  b.room({0, 0}, {6, 7}, 2.7);
-  b.desk({0.4, 2.2}, kEast);
-  b.chair({1.15, 2.2}, kWest);
-  b.shelf({0.18, 4.5}, kEast, 1.2);
-  b.desk({1.7, 3.9}, kSouth);
-  b.chair({1.7, 3.15}, kNorth);
-  b.partition({4.8, 2.6}, kWest, 1.6);
-  b.shelf({5.82, 2.0}, kWest, 1.0);
-  b.cabinet({5.77, 3.9}, kWest);
-  b.desk({4.5, 6.6}, kSouth);
-  b.chair({4.5, 5.85}, kNorth);
-  b.plant({1.0, 6.4});
-  b.closedDoor({2.3, 7.0}, kSouth);
-  b.bin({5.6, 5.2});
-  st.wearer({{3.0, 1.0}, {3.0, 3.6}, {4.0, 4.9}}, 0.8, 2.0);
+  // A 6 x 6.5 m room with a free-standing double bookcase across it: the wearer walks up to the
+  // bookcase, turns right along it and walks on beside the west wall. Nearly everything in view
+  // stays within the depth sensor's range.
+  b.room({0, 0}, {6, 6.5}, 2.7);
+  for (double x : {3.0, 4.2}) {
+    b.shelf({x, 3.85}, kSouth, 1.2);
+    b.shelf({x, 4.21}, kNorth, 1.2);
+  }
+  b.desk({0.4, 1.8}, kEast);
+  b.chair({1.1, 1.8}, kWest);
+  b.cabinet({0.23, 4.2}, kEast);
+  b.shelf({0.18, 5.5}, kEast, 1.0);
+  b.shelf({5.82, 1.8}, kWest, 1.2);
+  b.plant({5.6, 3.1});
+  b.cabinet({5.77, 5.3}, kWest);
+  b.closedDoor({3.2, 6.5}, kSouth);
+  b.desk({4.8, 6.1}, kSouth);
+  b.closedDoor({1.2, 0.0}, kNorth);
+  b.bin({2.2, 0.4});
+  st.wearer({{3.6, 0.5}, {3.4, 1.6}, {1.6, 3.3}, {1.6, 5.0}}, 0.7, 1.6);
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
 }
@@ -123,9 +127,14 @@ std::unique_ptr<Scene> approach(Stage& st) {
 }
 
 std::unique_ptr<Scene> crossing(Stage& st) {
-  furnishOffice(st);
-  const double v_wearer = 0.9, wait = 0.5, ramp = 1.0, x_w = 3.5, z_w0 = 0.8;
-  st.wearer({{x_w, z_w0}, {x_w, 8.0}}, v_wearer, 1.0, wait);
+  furnishOffice(st, /*pillar=*/false);  // the walker's line passes where the pillar stands
+  // A double bookcase 0.6 m beyond the walker's line keeps the view ahead within depth range.
+  for (double x : {2.9, 4.1}) {
+    st.build.shelf({x, 6.2}, kSouth, 1.2);
+    st.build.shelf({x, 6.56}, kNorth, 1.2);
+  }
+  const double v_wearer = 0.9, wait = 0.5, ramp = 1.0, x_w = 3.5, z_w0 = 1.8;
+  st.wearer({{x_w, z_w0}, {x_w, 5.2}}, v_wearer, 1.0, wait);
   // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is kCrossingAheadM short of it.
   const double start_x = 6.3, t_c = 3.0;
   const double s_wearer = v_wearer * ramp / 2 + v_wearer * (t_c - wait - ramp);  // trapezoid, past the ramp
@@ -138,10 +147,11 @@ std::unique_ptr<Scene> crossing(Stage& st) {
 
 std::unique_ptr<Scene> office(Stage& st) {
   furnishOffice(st);
-  st.wearer({{3.5, 0.8}, {3.5, 4.8}, {4.6, 7.0}}, 0.9, 2.0);
+  // The wearer first faces the desks behind the west partition, then turns up the aisle.
+  st.wearer({{3.9, 0.6}, {3.1, 1.8}, {3.5, 4.2}, {4.4, 6.2}}, 0.85, 1.8);
   st.person(1, Motion({6.3, 5.8}, kWest).wait(1.0).walk(SmoothPath({{6.3, 5.8}, {1.4, 5.8}, {1.4, 4.5}}, 1.0), 1.2));
-  st.person(2, Motion({2.5, 8.5}, kSouth).wait(0.5).walk(line({2.5, 8.5}, {2.5, 2.2}), 1.0));
-  st.person(3, Motion({6.0, 3.0}, kNorth).walk(SmoothPath({{6.0, 3.0}, {6.0, 7.6}, {5.4, 8.2}}, 0.8), 0.7));
+  st.person(2, Motion({2.2, 6.8}, kSouth).wait(0.5).walk(line({2.2, 6.8}, {2.4, 2.2}), 1.0));
+  st.person(3, Motion({6.0, 2.9}, kNorth).walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7));
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
 }
@@ -248,10 +258,11 @@ const std::vector<ScenarioInfo>& scenarioList() {
   return infos;
 }
 
-std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos) {
+std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos,
+                                     float texels_per_m) {
   for (const auto& [info, factory] : registry()) {
     if (info.name != name) continue;
-    Stage stage(seed, photos);
+    Stage stage(seed, photos, texels_per_m);
     return factory(stage);
   }
   std::string names;

@@ -19,7 +19,9 @@ struct ScenarioInfo {
 const std::vector<ScenarioInfo>& scenarioList();
 
 /// Builds a scenario; throws InputError naming the valid scenarios for an unknown name.
-std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos);
+/// `texels_per_m` sets the texture resolution (lower builds faster; tests of motion use that).
+std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos,
+                                     float texels_per_m = 200.0f);
 
 /// Scripted figures the tests check the ground truth against.
 namespace script {

@@ -16,8 +16,10 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (!(options.fps > 0.0 && options.fps <= 1000.0))
     throw InputError("--fps", "must be in (0, 1000], got " + std::to_string(options.fps));
   if (options.frames < 0) throw InputError("--frames", "must be >= 0 (0 = the scenario's length)");
+  if (!(options.texels_per_m >= 10.0f && options.texels_per_m <= 1000.0f))
+    throw InputError("texels_per_m", "must be in [10, 1000]");
   const PhotoLibrary photos = options.photos ? PhotoLibrary::systemDefault() : PhotoLibrary();
-  scene_ = buildScenario(options.scenario, options.seed, photos);
+  scene_ = buildScenario(options.scenario, options.seed, photos, options.texels_per_m);
   frames_ = options.frames > 0 ? options.frames : std::max(1, int(std::lround(scene_->duration_s * options.fps)));
   camera_.name = "dynanav-sim";
   camera_.width = 640;

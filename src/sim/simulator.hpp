@@ -23,6 +23,7 @@ struct SimOptions {
   double fps = 30.0;
   bool noiseless = false;  ///< exact depth everywhere (no noise, range limits, holes), no colour noise
   bool photos = true;      ///< posters may use Debian's opencv-doc images when installed
+  float texels_per_m = 200.0f;  ///< texture resolution on surfaces
   DepthSensorModel depth;
   ColourSensorModel colour;
 };

@@ -62,6 +62,7 @@ void expectMatchesRayCaster(const std::string& scenario, int frame_index, uint16
   options.scenario = scenario;
   options.noiseless = true;
   options.photos = false;
+  options.texels_per_m = 80.0f;  // geometry does not depend on texture resolution
   Simulator sim(options);
   const SimFrame frame = sim.render(frame_index);
   ASSERT_EQ(cv::countNonZero(frame.depth_m != frame.depth_true_m), 0) << "noiseless depth must be exact";

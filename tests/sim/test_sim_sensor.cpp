@@ -66,6 +66,8 @@ SimOptions small(uint64_t seed) {
   SimOptions o;
   o.scenario = "office";
   o.seed = seed;
+  o.photos = false;
+  o.texels_per_m = 100.0f;
   return o;
 }
 
@@ -100,6 +102,7 @@ TEST(SimFrames, EveryScenarioRendersPlausibleFrames) {
     SimOptions o;
     o.scenario = info.name;
     o.photos = false;
+    o.texels_per_m = 80.0f;
     Simulator sim(o);
     for (int i : {0, sim.frameCount() - 1}) {
       const SimFrame f = sim.render(i);
