@@ -74,7 +74,7 @@ void Person::draw(const BodyPose& pose, uint16_t id, std::vector<DrawItem>& out)
   const float hip = 0.44f * w * float(std::sin(phase));
   const float knee_l = 0.6f * w * float(std::max(0.0, std::sin(phase + 1.2)));
   const float knee_r = 0.6f * w * float(std::max(0.0, std::sin(phase + 1.2 + M_PI)));
-  const float arm = pose.pushing ? 1.3f : 0.35f * w * float(std::sin(phase));
+  const float arm = pose.pushing ? 0.85f : 0.35f * w * float(std::sin(phase));  // pushing: hands at ~1 m
   const float elbow = pose.pushing ? 0.2f : 0.25f;
 
   add(kTorso, translate(Vec3f(0, float(torsoCentreHeight()), 0)));

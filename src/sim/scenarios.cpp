@@ -34,17 +34,18 @@ struct Stage {
     scene->movers.push_back(m);
     return scene->movers.back();
   }
-  Mover& box(uint16_t id, const Motion& motion, double size_m) {
+  /// A carton (size: width, height, depth in metres) whose mesh stands on the floor.
+  Mover& box(uint16_t id, const Motion& motion, const Vec3f& size_m) {
     auto mesh = std::make_unique<Mesh>();
-    const int tex = build.texture(cardboard(cv::Size(int(size_m * 2 * build.texelsPerMetre()), int(size_m * build.texelsPerMetre())), rng));
-    const float s = float(size_m);
-    mesh->addBox(Vec3f(0, s / 2, 0), Vec3f(s, s, s), tex, build.texelsPerMetre(), 0.0f);
+    const float tpm = build.texelsPerMetre();
+    const int tex = build.texture(cardboard(cv::Size(int(2 * size_m.x() * tpm), int(size_m.y() * tpm)), rng));
+    mesh->addBox(Vec3f(0, size_m.y() / 2, 0), size_m, tex, tpm, 0.0f);
     Mover m;
     m.id = id;
     m.cls = "box";
     m.motion = motion;
     m.mesh = mesh.get();
-    m.centre_height_m = size_m / 2;
+    m.centre_height_m = size_m.y() / 2;
     scene->rigid_meshes.push_back(std::move(mesh));
     scene->movers.push_back(m);
     return scene->movers.back();
@@ -170,8 +171,11 @@ std::unique_ptr<Scene> pushedBox(Stage& st) {
   // The walker comes round to stand behind the box (hands on its back face), pushes it 1 m
   // along +x at kPushSpeedMps, then turns away.
   const Vec2 box_start(3.0, 4.5), push_dir(1.0, 0.0);
-  const double box_size = 0.5, reach = 0.57;
-  const Vec2 stand = box_start - push_dir * (box_size / 2 + reach);
+  // A tall carton (0.7 x 1.0 x 0.7 m): the walker's hands (0.45 m ahead of the body centre,
+  // ~1 m above the floor) rest on its back face.
+  const Vec3f box_size(0.7f, 1.0f, 0.7f);
+  const double reach = 0.45;
+  const Vec2 stand = box_start - push_dir * (box_size.x() / 2 + reach);
   Motion walker({0.9, 5.8}, kSouth);
   walker.wait(1.0).walk(SmoothPath({{0.9, 5.8}, {1.4, 4.5}, stand}, 0.5), 1.0);
   const double push_from = walker.endTime() + 0.3;
