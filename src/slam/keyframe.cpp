@@ -102,7 +102,8 @@ void KeyFrame::eraseMapPoint(const MapPoint* point) {
 }
 
 void KeyFrame::setBad() {
-  if (id == 0 || bad) return;
+  // Keyframes closing a loop stay (ORB-SLAM2 mbNotErase): the essential graph needs both ends.
+  if (id == 0 || bad || !loop_edges.empty()) return;
   for (const auto& [kf, w] : connections) kf->eraseConnection(this);
   for (size_t i = 0; i < map_points.size(); ++i) {
     if (map_points[i]) map_points[i]->eraseObservation(this);

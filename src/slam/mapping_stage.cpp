@@ -23,6 +23,7 @@ void MappingStage::runPending() {
     KeyFramePtr kf = std::move(queue_.front());
     queue_.pop_front();
     mapper_.process(kf, !queue_.empty());
+    if (sink_) sink_(kf);
   }
 }
 
@@ -65,6 +66,7 @@ void MappingStage::workerLoop() {
       queue_changed_.notify_all();
     }
     mapper_.process(kf, more_waiting);
+    if (sink_) sink_(kf);
     std::unique_lock lock(queue_mutex_);
     busy_ = false;
   }

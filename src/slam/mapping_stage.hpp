@@ -5,6 +5,7 @@
 // full (visible back-pressure instead of unbounded growth); finish() drains and joins.
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -32,6 +33,9 @@ class MappingStage {
   void finish();
   /// Counters of the local mapper (read after finish() in threaded mode).
   [[nodiscard]] LocalMapperStats stats() const { return mapper_.stats(); }
+  /// Issue 4: called with each keyframe once local mapping is done with it (loop closing), on the
+  /// mapping thread in threaded mode. Set before the first insert().
+  void setKeyFrameSink(std::function<void(const KeyFramePtr&)> sink) { sink_ = std::move(sink); }
 
  private:
   void workerLoop();
@@ -45,6 +49,7 @@ class MappingStage {
   bool busy_ = false;
   bool stopping_ = false;
   std::thread worker_;
+  std::function<void(const KeyFramePtr&)> sink_;
 };
 
 }  // namespace dynanav

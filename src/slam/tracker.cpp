@@ -107,7 +107,8 @@ TrackOutcome Tracker::track(Frame& frame) {
     if (has_velocity_) ok = trackWithMotionModel(frame, last_, velocity_, config_);
     if (!ok) ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
   } else {
-    ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
+    if (relocaliser_) ok = relocaliser_->relocalise(frame, map_).ok;  // issue 4
+    if (!ok) ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
   }
   spdlog::debug("frame {}: initial pose {} ({} matches)", frame.id, ok ? "ok" : "failed",
                 std::count_if(frame.map_points.begin(), frame.map_points.end(), [](const auto& p) { return p != nullptr; }));

@@ -11,6 +11,7 @@
 #include "slam/local_map.hpp"
 #include "slam/map.hpp"
 #include "slam/mapping_stage.hpp"
+#include "slam/relocaliser.hpp"
 
 namespace dynanav {
 
@@ -33,6 +34,9 @@ class Tracker {
   TrackOutcome track(Frame& frame);
 
   [[nodiscard]] TrackingState state() const { return state_; }
+  /// Issue 4: when lost, relocalise against the whole map by place recognition (nullptr: only
+  /// retry the last reference keyframe).
+  void setRelocaliser(const Relocaliser* relocaliser) { relocaliser_ = relocaliser; }
   [[nodiscard]] const LocalMap& localMap() const { return local_; }
 
  private:
@@ -55,6 +59,7 @@ class Tracker {
   KeyFramePtr reference_;
   LocalMap local_;
   uint64_t last_keyframe_frame_id_ = 0;
+  const Relocaliser* relocaliser_ = nullptr;
 };
 
 }  // namespace dynanav
