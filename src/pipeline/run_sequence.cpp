@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <future>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -75,21 +76,28 @@ RunSummary runSequence(const RunOptions& options) {
   spdlog::info("sequence {}: {} frames, camera {} (from {})", sequence.dir().string(), sequence.size(),
                sequence.camera().name, sequence.cameraSource());
 
-  System system(options.config, sequence.camera());
+  System system(options.config, sequence.camera(), options.sequence_dir);
   TrajectoryWriter trajectory(options.out_dir / "trajectory.txt");
   RunSummary summary;
   size_t total = sequence.size();
   if (options.max_frames > 0) total = std::min<size_t>(total, options.max_frames);
   const auto start = std::chrono::steady_clock::now();
+  // Decoding the next frame's images overlaps with processing this one. Loading is a pure
+  // function of the files, so this does not affect determinism.
+  auto load = [&sequence](size_t i) { return sequence.load(i); };
+  std::future<RgbdFrame> next;
+  if (total > 0) next = std::async(std::launch::async, load, 0);
   for (size_t i = 0; i < total; ++i) {
     RgbdFrame frame;
     try {
-      frame = sequence.load(i);
+      frame = next.get();
     } catch (const InputError& e) {
       ++summary.skipped;
       spdlog::warn("frame {} skipped: {}", i, e.what());
+      if (i + 1 < total) next = std::async(std::launch::async, load, i + 1);
       continue;
     }
+    if (i + 1 < total) next = std::async(std::launch::async, load, i + 1);
     const int index = static_cast<int>(i);
     if (options.blackout && index >= options.blackout->first && index <= options.blackout->second)
       frame = blackFrame(frame, sequence.camera());
@@ -109,7 +117,9 @@ RunSummary runSequence(const RunOptions& options) {
   if (options.progress) std::fprintf(stderr, "\n");
   summary.initialised = system.numKeyFrames() > 0;
   writeTrajectory(options.out_dir / "keyframes.txt", system.keyframePoses());
-  writeJsonFile(options.out_dir / "stats.json", statsJson(summary, system, wall_s));
+  nlohmann::json stats = statsJson(summary, system, wall_s);
+  stats["dynamics"] = system.dynamicsSummary();  // issue 7
+  writeJsonFile(options.out_dir / "stats.json", stats);
   spdlog::info("{} frames: {} tracked, {} lost, {} skipped; {} keyframes, {} map points; {:.1f} frames/s",
                summary.frames, summary.tracked, summary.lost, summary.skipped, system.numKeyFrames(),
                system.numMapPoints(), wall_s > 0 ? summary.frames / wall_s : 0.0);

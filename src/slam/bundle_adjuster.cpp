@@ -1,6 +1,7 @@
 #include "slam/bundle_adjuster.hpp"
 
 #include <ceres/ceres.h>
+#include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
 
 namespace dynanav {
@@ -9,12 +10,15 @@ namespace {
 constexpr double kChi2Mono = 5.991;
 constexpr double kChi2Stereo = 7.815;
 
-/// p_camera = R(q) p_world + t with q = (w, x, y, z), Ceres' quaternion order.
+/// p_camera = R(q) p_world + t with pose = (qw, qx, qy, qz, tx, ty, tz): one 7-parameter block
+/// (6 in the tangent space) per keyframe keeps the Schur complement's blocks few and dense.
 struct BaCost {
   explicit BaCost(const BaObservation& obs, const PoseCamera& cam)
       : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
   template <class T>
-  bool operator()(const T* q, const T* t, const T* point, T* residual) const {
+  bool operator()(const T* pose, const T* point, T* residual) const {
+    const T* q = pose;
+    const T* t = pose + 4;
     T p[3];
     ceres::UnitQuaternionRotatePoint(q, point, p);
     p[0] += t[0];
@@ -32,18 +36,20 @@ struct BaCost {
   double weight_;
 };
 
+using PoseManifold = ceres::ProductManifold<ceres::QuaternionManifold, ceres::EuclideanManifold<3>>;
+
 struct PoseBlock {
-  double q[4];  // w, x, y, z
-  double t[3];
+  double x[7];  // qw, qx, qy, qz, tx, ty, tz
 };
 
 PoseBlock toBlock(const SE3& T) {
   const Quat q(T.linear());
-  return {{q.w(), q.x(), q.y(), q.z()}, {T.translation().x(), T.translation().y(), T.translation().z()}};
+  const Vec3& t = T.translation();
+  return {{q.w(), q.x(), q.y(), q.z(), t.x(), t.y(), t.z()}};
 }
 
 SE3 fromBlock(const PoseBlock& b) {
-  return makeSE3(Quat(b.q[0], b.q[1], b.q[2], b.q[3]), Vec3(b.t[0], b.t[1], b.t[2]));
+  return makeSE3(Quat(b.x[0], b.x[1], b.x[2], b.x[3]), Vec3(b.x[4], b.x[5], b.x[6]));
 }
 
 /// (chi2 weighted by the level variance, pixel error^2 in u,v, in front of the camera?)
@@ -92,10 +98,11 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.disable_all_safety_checks = true;  // blocks are built here, sizes known
   ceres::Problem ceres_problem(problem_options);
   ceres::HuberLoss huber_mono(std::sqrt(kChi2Mono));
   ceres::HuberLoss huber_stereo(std::sqrt(kChi2Stereo));
-  ceres::QuaternionManifold quaternion_manifold;
+  PoseManifold pose_manifold;
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   std::vector<uint8_t> pose_used(poses.size(), 0), point_used(points.size(), 0);
   for (size_t i = 0; i < problem.observations.size(); ++i) {
@@ -104,20 +111,16 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
     const bool stereo = obs.u_right >= 0.0;
     ceres::CostFunction* cost =
         stereo ? static_cast<ceres::CostFunction*>(
-                     new ceres::AutoDiffCostFunction<BaCost, 3, 4, 3, 3>(new BaCost(obs, problem.camera)))
-               : new ceres::AutoDiffCostFunction<BaCost, 2, 4, 3, 3>(new BaCost(obs, problem.camera));
+                     new ceres::AutoDiffCostFunction<BaCost, 3, 7, 3>(new BaCost(obs, problem.camera)))
+               : new ceres::AutoDiffCostFunction<BaCost, 2, 7, 3>(new BaCost(obs, problem.camera));
     ceres::LossFunction* loss = robust ? (stereo ? &huber_stereo : static_cast<ceres::LossFunction*>(&huber_mono)) : nullptr;
     PoseBlock& pose = poses[obs.keyframe];
-    ceres_problem.AddResidualBlock(cost, loss, pose.q, pose.t, points[obs.point].data());
+    ceres_problem.AddResidualBlock(cost, loss, pose.x, points[obs.point].data());
     if (!pose_used[obs.keyframe]) {
       pose_used[obs.keyframe] = 1;
-      ceres_problem.SetManifold(pose.q, &quaternion_manifold);
-      if (problem.keyframes[obs.keyframe].fixed) {
-        ceres_problem.SetParameterBlockConstant(pose.q);
-        ceres_problem.SetParameterBlockConstant(pose.t);
-      }
-      ordering->AddElementToGroup(pose.q, 1);
-      ordering->AddElementToGroup(pose.t, 1);
+      ceres_problem.SetManifold(pose.x, &pose_manifold);
+      if (problem.keyframes[obs.keyframe].fixed) ceres_problem.SetParameterBlockConstant(pose.x);
+      ordering->AddElementToGroup(pose.x, 1);
     }
     if (!point_used[obs.point]) {
       point_used[obs.point] = 1;

@@ -1,9 +1,9 @@
 #include "slam/pose_optimizer.hpp"
 
-#include <ceres/ceres.h>
-#include <ceres/rotation.h>
+#include <ceres/tiny_solver.h>
 
-#include <memory>
+#include <cmath>
+#include <limits>
 
 namespace dynanav {
 namespace {
@@ -11,34 +11,84 @@ namespace {
 constexpr double kChi2Mono = 5.991;    // chi2(2 dof, 95 %)
 constexpr double kChi2Stereo = 7.815;  // chi2(3 dof, 95 %)
 
-/// Residual of one observation for a pose update delta = (omega, t) applied on the left of the
-/// initial pose: p_camera = R(omega) * (T0 * p_world) + t. p0 = T0 * p_world is precomputed,
-/// so the cost function is built once and reused over the rounds.
-struct ReprojectionCost {
-  ReprojectionCost(const Vec3& p0, const PoseObservation& obs, const PoseCamera& cam, bool stereo)
-      : p0_(p0), obs_(obs), cam_(cam), stereo_(stereo), weight_(std::sqrt(obs.inv_sigma2)) {}
+/// The residuals of one round for Ceres' TinySolver (dense Levenberg-Marquardt without the
+/// general solver's per-problem set-up, which dominated the cost of this 6-parameter problem).
+/// Parameters: a left update delta = (omega, t) of the round's starting pose,
+/// p_camera = R(omega) * p0 + t with p0 = T0 * p_world. Residuals are weighted by the level's
+/// inverse standard deviation; with `robust`, each observation's residual is rescaled so that its
+/// squared norm equals the Huber cost of its chi2 (thresholds sqrt(5.991) / sqrt(7.815), as
+/// ORB-SLAM2), and its Jacobian by the same factor.
+class PoseResiduals {
+ public:
+  using Scalar = double;
+  enum { NUM_RESIDUALS = Eigen::Dynamic, NUM_PARAMETERS = 6 };
 
-  template <class T>
-  bool operator()(const T* delta, T* residual) const {
-    const T p0[3] = {T(p0_.x()), T(p0_.y()), T(p0_.z())};
-    T p[3];
-    ceres::AngleAxisRotatePoint(delta, p0, p);
-    p[0] += delta[3];
-    p[1] += delta[4];
-    p[2] += delta[5];
-    const T inv_z = T(1.0) / p[2];
-    const T u = T(cam_.fx) * p[0] * inv_z + T(cam_.cx);
-    residual[0] = T(weight_) * (T(obs_.u) - u);
-    residual[1] = T(weight_) * (T(obs_.v) - (T(cam_.fy) * p[1] * inv_z + T(cam_.cy)));
-    if (stereo_) residual[2] = T(weight_) * (T(obs_.u_right) - (u - T(cam_.bf) * inv_z));
+  PoseResiduals(const std::vector<PoseObservation>& observations, const std::vector<int>& used,
+                const PoseCamera& camera, const SE3& T0, bool robust)
+      : camera_(camera), robust_(robust) {
+    for (const int i : used) {
+      const auto& obs = observations[i];
+      Item item;
+      item.p0 = T0 * obs.p_world;
+      item.u = obs.u;
+      item.v = obs.v;
+      item.u_right = obs.u_right;
+      item.weight = std::sqrt(obs.inv_sigma2);
+      item.row = num_residuals_;
+      num_residuals_ += obs.u_right >= 0.0 ? 3 : 2;
+      items_.push_back(item);
+    }
+  }
+
+  [[nodiscard]] int NumResiduals() const { return num_residuals_; }
+
+  bool operator()(const double* delta, double* residuals, double* jacobian) const {
+    const Mat3 R = expSO3(Vec3(delta[0], delta[1], delta[2]));
+    const Vec3 t(delta[3], delta[4], delta[5]);
+    const int rows = num_residuals_;
+    for (const Item& item : items_) {
+      const Vec3 p = R * item.p0 + t;
+      const double inv_z = 1.0 / p.z();
+      const double u = camera_.fx * p.x() * inv_z + camera_.cx;
+      const double v = camera_.fy * p.y() * inv_z + camera_.cy;
+      const bool stereo = item.u_right >= 0.0;
+      double e[3] = {item.weight * (item.u - u), item.weight * (item.v - v), 0.0};
+      if (stereo) e[2] = item.weight * (item.u_right - (u - camera_.bf * inv_z));
+      const int dims = stereo ? 3 : 2;
+      double scale = 1.0;
+      if (robust_) {
+        const double s = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        const double delta_h = std::sqrt(stereo ? kChi2Stereo : kChi2Mono);
+        if (s > delta_h * delta_h) scale = std::sqrt((2.0 * delta_h * std::sqrt(s) - delta_h * delta_h) / s);
+      }
+      for (int k = 0; k < dims; ++k) residuals[item.row + k] = scale * e[k];
+      if (!jacobian) continue;
+      // d(residual)/dp = -weight * d(projection)/dp; dp/d(omega) = -[p]x, dp/dt = I (left update).
+      const double inv_z2 = inv_z * inv_z;
+      Eigen::Matrix<double, 3, 3> dproj;
+      dproj << camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2,  //
+          0.0, camera_.fy * inv_z, -camera_.fy * p.y() * inv_z2,          //
+          camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2 + camera_.bf * inv_z2;
+      Eigen::Matrix<double, 3, 6> dp;
+      dp.leftCols<3>() << 0.0, p.z(), -p.y(), -p.z(), 0.0, p.x(), p.y(), -p.x(), 0.0;
+      dp.rightCols<3>().setIdentity();
+      const Eigen::Matrix<double, 3, 6> J = (-item.weight * scale) * dproj * dp;
+      for (int k = 0; k < dims; ++k)
+        for (int c = 0; c < 6; ++c) jacobian[c * rows + item.row + k] = J(k, c);
+    }
     return true;
   }
 
-  Vec3 p0_;
-  PoseObservation obs_;
-  PoseCamera cam_;
-  bool stereo_;
-  double weight_;
+ private:
+  struct Item {
+    Vec3 p0;
+    double u, v, u_right, weight;
+    int row;
+  };
+  PoseCamera camera_;
+  bool robust_;
+  std::vector<Item> items_;
+  int num_residuals_ = 0;
 };
 
 /// chi2 = e^T Omega e of an observation at pose T_cw (or infinity behind the camera).
@@ -57,10 +107,10 @@ double chi2(const PoseObservation& obs, const PoseCamera& cam, const SE3& T_cw) 
   return e2 * obs.inv_sigma2;
 }
 
-SE3 applyDelta(const double* delta, const SE3& T0) {
+SE3 applyDelta(const Eigen::Matrix<double, 6, 1>& delta, const SE3& T0) {
   SE3 D = SE3::Identity();
-  D.linear() = expSO3(Vec3(delta[0], delta[1], delta[2]));
-  D.translation() = Vec3(delta[3], delta[4], delta[5]);
+  D.linear() = expSO3(delta.head<3>());
+  D.translation() = delta.tail<3>();
   return orthonormalized(D * T0);
 }
 
@@ -72,54 +122,28 @@ int optimizePose(const std::vector<PoseObservation>& observations, const PoseCam
   const size_t n = observations.size();
   outlier.assign(n, 0);
   if (n < 3) return 0;
-  const SE3 T0 = T_camera_world;
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  costs.reserve(n);
-  for (const auto& obs : observations) {
-    const bool stereo = obs.u_right >= 0.0;
-    auto* functor = new ReprojectionCost(T0 * obs.p_world, obs, camera, stereo);
-    if (stereo) costs.emplace_back(new ceres::AutoDiffCostFunction<ReprojectionCost, 3, 6>(functor));
-    else costs.emplace_back(new ceres::AutoDiffCostFunction<ReprojectionCost, 2, 6>(functor));
-  }
-  ceres::HuberLoss huber_mono(std::sqrt(kChi2Mono));
-  ceres::HuberLoss huber_stereo(std::sqrt(kChi2Stereo));
-
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  solver_options.max_num_iterations = options.iterations_per_round;
-  solver_options.num_threads = 1;
-  solver_options.logging_type = ceres::SILENT;
-  solver_options.minimizer_progress_to_stdout = false;
-
-  double delta[6] = {0, 0, 0, 0, 0, 0};
   int inliers = static_cast<int>(n);
+  std::vector<int> used;
   for (int round = 0; round < options.rounds; ++round) {
-    const bool robust = round < options.rounds - 1;
-    ceres::Problem::Options problem_options;
-    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    ceres::Problem problem(problem_options);
-    problem.AddParameterBlock(delta, 6);
-    int used = 0;
-    for (size_t i = 0; i < n; ++i) {
-      if (outlier[i]) continue;
-      const bool stereo = observations[i].u_right >= 0.0;
-      ceres::LossFunction* loss = robust ? (stereo ? static_cast<ceres::LossFunction*>(&huber_stereo) : &huber_mono) : nullptr;
-      problem.AddResidualBlock(costs[i].get(), loss, delta);
-      ++used;
-    }
-    if (used < 10) break;  // too few to trust another round (ORB-SLAM2)
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver_options, &problem, &summary);
-    const SE3 T = applyDelta(delta, T0);
+    // ORB-SLAM2: outliers sit out a round but are re-classified after it; the robust loss is
+    // dropped for the last round.
+    used.clear();
+    for (size_t i = 0; i < n; ++i)
+      if (!outlier[i]) used.push_back(static_cast<int>(i));
+    if (used.size() < 10) break;  // too few to trust another round
+    const PoseResiduals residuals(observations, used, camera, T_camera_world, round < options.rounds - 1);
+    ceres::TinySolver<PoseResiduals> solver;
+    solver.options.max_num_iterations = options.iterations_per_round;
+    Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
+    solver.Solve(residuals, &delta);
+    T_camera_world = applyDelta(delta, T_camera_world);
     inliers = 0;
     for (size_t i = 0; i < n; ++i) {
       const double threshold = observations[i].u_right >= 0.0 ? kChi2Stereo : kChi2Mono;
-      outlier[i] = chi2(observations[i], camera, T) > threshold;
+      outlier[i] = chi2(observations[i], camera, T_camera_world) > threshold;
       if (!outlier[i]) ++inliers;
     }
   }
-  T_camera_world = applyDelta(delta, T0);
   return inliers;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Pose-only optimisation (ORB-SLAM2 Optimizer::PoseOptimization) in Ceres: the frame's pose is
-// refined against its matched map points, fixed. Keypoints with depth give a 3-vector residual
+// Pose-only optimisation (ORB-SLAM2 Optimizer::PoseOptimization) with Ceres' TinySolver: the
+// frame's pose is refined against its matched map points, fixed. Keypoints with depth give a 3-vector residual
 // (u, v, u_right), the others a 2-vector; each is weighted by the inverse variance of its
 // pyramid level, with a Huber loss. After each round every match is re-classified by chi2
 // (95 %: 5.991 for 2 dof, 7.815 for 3 dof); outliers are left out of the next round but can come
