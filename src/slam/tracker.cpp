@@ -112,6 +112,7 @@ TrackOutcome Tracker::track(Frame& frame) {
   }
   spdlog::debug("frame {}: initial pose {} ({} matches)", frame.id, ok ? "ok" : "failed",
                 std::count_if(frame.map_points.begin(), frame.map_points.end(), [](const auto& p) { return p != nullptr; }));
+  if (ok && mover_filter_) mover_filter_(frame);  // issue 7: movers leave before the local map
   if (ok) {
     outcome.inliers = trackLocalMap(frame, map_.keyframes(), config_, local_);
     spdlog::debug("frame {}: local map {} kfs {} points -> {} inliers", frame.id, local_.keyframes.size(),
@@ -155,6 +156,7 @@ TrackOutcome Tracker::track(Frame& frame) {
     last_is_keyframe_ = true;
   }
   rememberAsLast(frame);
+  outcome.reference = reference_;
   lock.unlock();
   if (outcome.new_keyframe) mapping_.insert(outcome.new_keyframe);
   outcome.state = state_;

@@ -5,6 +5,7 @@
 // local mapping. Loss is a state: lost frames are reported, and each later frame tries to
 // recover against the last reference keyframe (full relocalisation is a later issue).
 #include <cstdint>
+#include <functional>
 
 #include "core/config/tracking.hpp"
 #include "slam/frame.hpp"
@@ -23,6 +24,7 @@ struct TrackOutcome {
   KeyFramePtr new_keyframe;  ///< set when this frame became a keyframe
   int inliers = 0;           ///< local-map inliers (or map points created at initialisation)
   bool recovered = false;    ///< this frame ended a loss
+  KeyFramePtr reference;     ///< reference keyframe of a tracked frame (for final pose refinement)
 };
 
 class Tracker {
@@ -38,6 +40,9 @@ class Tracker {
   /// retry the last reference keyframe).
   void setRelocaliser(const Relocaliser* relocaliser) { relocaliser_ = relocaliser; }
   [[nodiscard]] const LocalMap& localMap() const { return local_; }
+  /// Issue 7 (dynamics): called on the frame after its initial pose and before local-map
+  /// tracking; it drops matches and clears `usable` on keypoints of moving objects.
+  void setMoverFilter(std::function<void(Frame&)> filter) { mover_filter_ = std::move(filter); }
 
  private:
   bool initialise(Frame& frame, TrackOutcome& outcome);
@@ -60,6 +65,7 @@ class Tracker {
   LocalMap local_;
   uint64_t last_keyframe_frame_id_ = 0;
   const Relocaliser* relocaliser_ = nullptr;
+  std::function<void(Frame&)> mover_filter_;  // issue 7
 };
 
 }  // namespace dynanav

@@ -9,6 +9,7 @@ namespace dynanav {
 /// Dynamic-object handling (paper's values as defaults).
 struct DynamicsConfig {
   std::vector<std::string> prior_dynamic_classes = {"person", "dog", "cat", "horse", "bird"};
+  int prior_mask_dilate_px = 10;
   double depth_diff_min_m = 0.10;
   double depth_diff_per_z2 = 0.02;
   double instance_dynamic_share = 0.30;
@@ -20,6 +21,9 @@ struct DynamicsConfig {
   template <class V> void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
       "classes that may move: their keypoints never enter the initial pose estimate or the map");
+    v("prior_mask_dilate_px", prior_mask_dilate_px,
+      "prior-dynamic masks are grown by this many pixels before ORB extraction (mask edges lag "
+      "fast limbs; ORB's 31 px patch straddles the outline)");
     v("depth_diff_min_m", depth_diff_min_m,
       "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint");
     v("depth_diff_per_z2", depth_diff_per_z2,

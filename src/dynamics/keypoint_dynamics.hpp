@@ -1,0 +1,45 @@
+#pragma once
+// Per-keypoint dynamic handling on a tracked Frame (DESIGN.md §1 steps 3 and 5), as functions of
+// explicit inputs so they can be tested without a System:
+//  - prior-dynamic instances (people, animals) are cut out of ORB extraction, dilated, so their
+//    keypoints never reach the initial pose, the local map or a keyframe;
+//  - after the initial pose, every keypoint matched to a map point takes DynaSLAM's
+//    depth-difference test with the paper's instance vote (depth_difference.hpp); keypoints
+//    judged dynamic lose their match and their `usable` flag, so local-map tracking, keyframes
+//    and new map points skip them.
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "core/config/dynamics.hpp"
+#include "perception/instances.hpp"
+#include "slam/frame.hpp"
+
+namespace dynanav {
+
+/// True if the instance's class is listed in prior_dynamic_classes.
+bool isPriorDynamic(const Instance& instance, const DynamicsConfig& config);
+
+/// CV_8U mask for the ORB extractor: 255 where features may be extracted, 0 on prior-dynamic
+/// instances grown by prior_mask_dilate_px. Empty when there is nothing to cut out (the
+/// extractor then allows the whole image).
+cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config);
+
+/// Sets features.instance_id from the label image at each keypoint's (distorted) pixel.
+void labelKeypoints(Features& features, const cv::Mat& labels);
+
+struct MoverRejection {
+  int checked = 0;                       ///< keypoints with a map point and depth
+  int rejected = 0;                      ///< keypoints made unusable
+  std::vector<uint16_t> moving_instances;  ///< instances voted dynamic (ascending id)
+};
+
+/// The depth-difference test on `frame` at its current pose estimate: predicted depth = depth
+/// of the matched map point in the camera, measured = sensor depth at the keypoint. Dynamic
+/// keypoints (own failure, or in an instance voted dynamic) lose their map point, outlier flag
+/// and usable flag. Instances in `known_moving` are treated as voted dynamic (a mover stays a
+/// mover for the frames where too few of its points are matched to vote).
+MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
+                                 const std::vector<uint16_t>& known_moving = {});
+
+}  // namespace dynanav

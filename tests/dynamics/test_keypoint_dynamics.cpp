@@ -1,0 +1,115 @@
+#include <gtest/gtest.h>
+
+#include "dynamics/keypoint_dynamics.hpp"
+
+using namespace dynanav;
+
+namespace {
+Instances twoObjects() {
+  Instances instances;
+  instances.labels = cv::Mat::zeros(120, 160, CV_16U);
+  instances.labels(cv::Rect(10, 10, 30, 60)).setTo(1);   // a person
+  instances.labels(cv::Rect(100, 40, 40, 40)).setTo(2);  // a box
+  instances.items = {{1, "person", 0.9f, cv::Rect(10, 10, 30, 60), "selfie", {}},
+                     {2, "box", 1.f, cv::Rect(100, 40, 40, 40), "file", {}}};
+  return instances;
+}
+
+/// A frame at the identity with keypoints at `pixels`, each matched to a map point straight
+/// ahead at `map_depth_m` and measured at `measured_depth_m`.
+Frame frameWith(const std::vector<cv::Point2f>& pixels, const std::vector<float>& map_depth_m,
+                const std::vector<float>& measured_depth_m) {
+  Features f;
+  for (const auto& p : pixels) f.keypoints.emplace_back(p, 31.f);
+  f.points = pixels;
+  f.depth_m = measured_depth_m;
+  f.usable.assign(pixels.size(), 1);
+  f.instance_id.assign(pixels.size(), 0);
+  Frame frame(7, 0.0, f);
+  for (size_t i = 0; i < pixels.size(); ++i)
+    if (map_depth_m[i] > 0) frame.map_points[i] = std::make_shared<MapPoint>(i, Vec3(0, 0, map_depth_m[i]), nullptr);
+  return frame;
+}
+}  // namespace
+
+TEST(KeypointDynamics, PriorClassesOnly) {
+  DynamicsConfig c;
+  const Instances instances = twoObjects();
+  EXPECT_TRUE(isPriorDynamic(instances.items[0], c));
+  EXPECT_FALSE(isPriorDynamic(instances.items[1], c));
+}
+
+TEST(KeypointDynamics, ExtractionMaskCutsOutDilatedPersonOnly) {
+  DynamicsConfig c;
+  c.prior_mask_dilate_px = 5;
+  const cv::Mat allowed = staticExtractionMask(twoObjects(), c);
+  ASSERT_EQ(allowed.type(), CV_8U);
+  EXPECT_EQ(allowed.at<uint8_t>(40, 25), 0);    // inside the person
+  EXPECT_EQ(allowed.at<uint8_t>(40, 43), 0);    // 4 px right of the person: dilated away
+  EXPECT_EQ(allowed.at<uint8_t>(40, 50), 255);  // 11 px right: allowed
+  EXPECT_EQ(allowed.at<uint8_t>(60, 120), 255); // the box is not a prior mover
+}
+
+TEST(KeypointDynamics, NoPriorObjectsGivesEmptyMask) {
+  DynamicsConfig c;
+  Instances instances = twoObjects();
+  instances.items.erase(instances.items.begin());
+  EXPECT_TRUE(staticExtractionMask(instances, c).empty());
+  EXPECT_TRUE(staticExtractionMask(Instances::none({160, 120}), c).empty());
+}
+
+TEST(KeypointDynamics, LabelsFollowKeypointPixels) {
+  Frame frame = frameWith({{20, 20}, {120, 60}, {70, 100}}, {2, 2, 2}, {2, 2, 2});
+  labelKeypoints(frame.features, twoObjects().labels);
+  EXPECT_EQ(frame.features.instance_id, (std::vector<uint16_t>{1, 2, 0}));
+}
+
+TEST(KeypointDynamics, MovingBoxIsRejectedWholeStaticPointsKept) {
+  DynamicsConfig c;
+  // Six box keypoints: four moved 0.4 m closer, one agrees, one has no map point yet.
+  // Two background points: one agrees, one is a lone mover outside any mask.
+  std::vector<cv::Point2f> px = {{105, 45}, {110, 50}, {115, 55}, {120, 60}, {125, 65}, {130, 70},
+                                 {70, 100}, {80, 100}};
+  std::vector<float> map_z = {2.0f, 2.0f, 2.0f, 2.0f, 2.0f, 0.f, 3.0f, 3.0f};
+  std::vector<float> meas_z = {1.6f, 1.6f, 1.6f, 1.6f, 2.0f, 1.6f, 3.01f, 2.2f};
+  Frame frame = frameWith(px, map_z, meas_z);
+  labelKeypoints(frame.features, twoObjects().labels);
+  c.instance_min_points = 5;
+  const MoverRejection r = rejectDepthMovers(frame, c);
+  EXPECT_EQ(r.checked, 7);
+  EXPECT_EQ(r.moving_instances, (std::vector<uint16_t>{2}));
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_FALSE(frame.features.usable[i]) << i;
+    EXPECT_FALSE(frame.map_points[i]) << i;
+  }
+  EXPECT_TRUE(frame.features.usable[6]);
+  EXPECT_TRUE(frame.map_points[6]);
+  EXPECT_FALSE(frame.features.usable[7]);  // judged on its own
+  EXPECT_EQ(r.rejected, 7);
+}
+
+TEST(KeypointDynamics, StaticSceneLosesNothing) {
+  DynamicsConfig c;
+  std::vector<cv::Point2f> px;
+  std::vector<float> map_z, meas_z;
+  for (int i = 0; i < 40; ++i) {
+    px.emplace_back(4.f * i, 100.f);
+    map_z.push_back(1.0f + 0.1f * i);
+    meas_z.push_back(1.0f + 0.1f * i + 0.01f * ((i % 3) - 1));  // sensor noise
+  }
+  Frame frame = frameWith(px, map_z, meas_z);
+  labelKeypoints(frame.features, twoObjects().labels);
+  const MoverRejection r = rejectDepthMovers(frame, c);
+  EXPECT_EQ(r.rejected, 0);
+  EXPECT_TRUE(r.moving_instances.empty());
+}
+
+TEST(KeypointDynamics, PoseIsUsedForPrediction) {
+  DynamicsConfig c;
+  // The camera moved 0.5 m forward: a point 3 m ahead in the world is 2.5 m ahead now.
+  Frame frame = frameWith({{70, 100}}, {3.0f}, {2.5f});
+  frame.T_camera_world = makeSE3(Quat::Identity(), Vec3(0, 0, -0.5));
+  EXPECT_EQ(rejectDepthMovers(frame, c).rejected, 0);
+  frame.T_camera_world = SE3::Identity();
+  EXPECT_EQ(rejectDepthMovers(frame, c).rejected, 1);
+}
