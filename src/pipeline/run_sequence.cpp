@@ -13,6 +13,7 @@
 #include "io/sequence.hpp"
 #include "io/trajectory.hpp"
 #include "pipeline/system.hpp"
+#include "slam/loop_closer.hpp"
 
 namespace dynanav {
 namespace {
@@ -43,13 +44,26 @@ nlohmann::json statsJson(const RunSummary& s, const System& system, double wall_
   const auto frame_it = all.find("frame");
   const TimingSummary latency = frame_it != all.end() ? frame_it->second : TimingSummary{};
   const auto mapping = system.mappingStats();
+  // Issue 4: loops with the frames that closed them (frame = the System's frame counter, which is
+  // the input index unless corrupt frames were skipped).
+  nlohmann::json loops = nlohmann::json::array();
+  nlohmann::json loop_frames = nlohmann::json::array();
+  for (const LoopEvent& e : system.loops()) {
+    loop_frames.push_back(e.frame_id);
+    loops.push_back({{"frame", e.frame_id}, {"t", e.stamp_s}, {"loop_frame", e.loop_frame_id},
+                     {"keyframe", e.keyframe_id}, {"loop_keyframe", e.loop_keyframe_id}, {"matches", e.matches},
+                     {"correction_m", e.correction_m}});
+  }
   return {{"frames", s.frames},
           {"tracked", s.tracked},
           {"lost", s.lost},
           {"skipped_corrupt", s.skipped},
           {"dropped", 0},
-          {"relocalisations", 0},
-          {"loops", 0},
+          {"relocalisations", s.relocalisation_frames.size()},
+          {"relocalisation_frames", s.relocalisation_frames},
+          {"loops", loops.size()},
+          {"loop_frames", loop_frames},
+          {"loop_details", loops},
           {"keyframes", system.numKeyFrames()},
           {"map_points", system.numMapPoints()},
           {"keyframes_culled", mapping.keyframes_culled},
@@ -109,7 +123,10 @@ RunSummary runSequence(const RunOptions& options) {
     } else if (result.state == TrackingState::kLost) {
       ++summary.lost;
     }
-    if (result.recovered) spdlog::info("frame {}: tracking recovered", i);
+    if (result.recovered) {
+      spdlog::info("frame {}: tracking recovered", i);
+      summary.relocalisation_frames.push_back(index);
+    }
     if (options.progress && (i % 5 == 0 || i + 1 == total)) drawProgress(i + 1, total, summary.lost);
   }
   system.finish();

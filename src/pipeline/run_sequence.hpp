@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "core/camera.hpp"
 #include "core/config.hpp"
@@ -28,6 +29,7 @@ struct RunSummary {
   int lost = 0;
   int skipped = 0;  ///< unreadable frames
   bool initialised = false;
+  std::vector<int> relocalisation_frames;  ///< input frames on which tracking came back (issue 4)
 };
 
 /// Runs the sequence; throws InputError for bad input (missing folder, lists, camera).
