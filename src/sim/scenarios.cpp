@@ -71,6 +71,8 @@ void furnishOffice(Stage& st, bool pillar = true) {
   b.desk({0.4, 3.8}, kEast);
   b.chair({1.1, 3.7}, kWest + 0.3);
   if (pillar) b.pillar({4.9, 5.2}, 0.5);
+  b.partition({1.3, 4.9}, kEast, 1.6);  // the aisle keeps near surfaces on both sides
+  b.partition({5.5, 4.2}, kWest, 1.6);
   b.partition({3.2, 7.3}, kSouth, 1.6);
   b.cabinet({0.23, 6.0}, kEast);
   b.plant({0.6, 6.95});
@@ -148,9 +150,10 @@ std::unique_ptr<Scene> crossing(Stage& st) {
 
 std::unique_ptr<Scene> office(Stage& st) {
   furnishOffice(st);
-  // The wearer first faces the desks behind the west partition, then turns up the aisle.
-  st.wearer({{3.9, 0.6}, {3.1, 1.8}, {3.5, 4.2}, {4.4, 6.2}}, 0.85, 1.8);
-  st.person(1, Motion({6.3, 5.8}, kWest).wait(1.0).walk(SmoothPath({{6.3, 5.8}, {1.4, 5.8}, {1.4, 4.5}}, 1.0), 1.2));
+  // The wearer first faces the desks behind the west partition (within depth range, for the
+  // SLAM to start on), then turns up the aisle.
+  st.wearer({{4.2, 0.6}, {2.6, 1.6}, {3.2, 3.8}, {4.4, 6.2}}, 0.7, 1.6);
+  st.person(1, Motion({6.3, 5.8}, kWest).wait(1.0).walk(SmoothPath({{6.3, 5.8}, {2.0, 5.8}, {2.0, 4.9}}, 0.6), 1.2));
   st.person(2, Motion({2.2, 6.8}, kSouth).wait(0.5).walk(line({2.2, 6.8}, {2.4, 2.2}), 1.0));
   st.person(3, Motion({6.0, 2.9}, kNorth).walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7));
   st.scene->duration_s = 10.0;
@@ -159,15 +162,15 @@ std::unique_ptr<Scene> office(Stage& st) {
 
 std::unique_ptr<Scene> pushedBox(Stage& st) {
   WorldBuilder& b = st.build;
-  b.room({0, 0}, {7, 6.5}, 2.7);
+  b.room({0, 0}, {7, 6.0}, 2.7);
   b.shelf({0.18, 2.0}, kEast, 1.2);
-  b.desk({0.4, 4.0}, kEast);
+  b.desk({0.4, 3.8}, kEast);
   b.shelf({6.82, 2.5}, kWest, 1.2);
   b.cabinet({6.77, 4.2}, kWest);
-  b.plant({6.5, 5.9});
-  b.closedDoor({3.0, 6.5}, kSouth);
-  b.shelf({5.0, 6.32}, kSouth, 1.0);
-  st.wearer({{3.5, 0.8}, {3.5, 2.2}}, 0.8, 1.0);
+  b.plant({6.5, 5.5});
+  b.closedDoor({3.0, 6.0}, kSouth);
+  b.shelf({5.0, 5.82}, kSouth, 1.0);
+  st.wearer({{3.5, 1.6}, {3.5, 2.4}}, 0.8, 1.0);
   // The walker comes round to stand behind the box (hands on its back face), pushes it 1 m
   // along +x at kPushSpeedMps, then turns away.
   const Vec2 box_start(3.0, 4.5), push_dir(1.0, 0.0);
@@ -176,13 +179,13 @@ std::unique_ptr<Scene> pushedBox(Stage& st) {
   const Vec3f box_size(0.7f, 1.0f, 0.7f);
   const double reach = 0.45;
   const Vec2 stand = box_start - push_dir * (box_size.x() / 2 + reach);
-  Motion walker({0.9, 5.8}, kSouth);
-  walker.wait(1.0).walk(SmoothPath({{0.9, 5.8}, {1.4, 4.5}, stand}, 0.5), 1.0);
+  Motion walker({0.9, 5.4}, kSouth);
+  walker.wait(1.0).walk(SmoothPath({{0.9, 5.4}, {1.4, 4.5}, stand}, 0.5), 1.0);
   const double push_from = walker.endTime() + 0.3;
   walker.wait(0.3).walk(line(stand, stand + push_dir * script::kPushDistanceM), script::kPushSpeedMps);
   const double push_to = walker.endTime();
   const Vec2 after = stand + push_dir * script::kPushDistanceM;
-  walker.wait(0.5).walk(SmoothPath({after, after + Vec2(-0.3, 1.0), {1.0, 5.9}}, 0.6), 1.1);
+  walker.wait(0.5).walk(SmoothPath({after, after + Vec2(-0.3, 0.9), {1.0, 5.4}}, 0.6), 1.1);
   Mover& person = st.person(1, walker);
   person.pushing_from = push_from;
   person.pushing_to = push_to;
@@ -220,20 +223,20 @@ std::unique_ptr<Scene> loop(Stage& st) {
 
 std::unique_ptr<Scene> standing(Stage& st) {
   WorldBuilder& b = st.build;
-  b.room({0, 0}, {7, 7}, 2.8);
+  b.room({0, 0}, {7, 6.0}, 2.8);
   b.shelf({0.18, 2.0}, kEast, 1.2);
-  b.desk({0.4, 4.5}, kEast);
-  b.chair({1.15, 4.5}, kWest);
-  b.shelf({6.82, 5.5}, kWest, 1.2);
+  b.desk({0.4, 4.0}, kEast);
+  b.chair({1.15, 4.0}, kWest);
+  b.shelf({6.82, 4.9}, kWest, 1.2);
   b.cabinet({6.77, 1.2}, kWest);
-  b.closedDoor({3.5, 7.0}, kSouth);
-  b.shelf({5.3, 6.82}, kSouth, 1.2);
-  b.plant({1.5, 6.5});
-  st.wearer({{3.5, 0.8}, {3.5, 2.4}}, 0.8, 1.0);
+  b.closedDoor({3.5, 6.0}, kSouth);
+  b.shelf({5.3, 5.82}, kSouth, 1.2);
+  b.plant({1.5, 5.5});
+  st.wearer({{3.5, 1.4}, {3.5, 2.2}}, 0.8, 1.0);
   // Three people chat in a group; at t = 3 s the second walks off towards the east wall.
-  st.person(1, Motion({2.8, 5.0}, kEast).wait(60.0));
-  st.person(2, Motion({4.0, 4.8}, kWest).wait(3.0).walk(SmoothPath({{4.0, 4.8}, {5.6, 4.0}, {6.0, 2.2}}, 1.0), 1.1));
-  st.person(3, Motion({3.5, 5.6}, kSouth).wait(60.0));
+  st.person(1, Motion({2.8, 4.4}, kEast).wait(60.0));
+  st.person(2, Motion({4.0, 4.2}, kWest).wait(3.0).walk(SmoothPath({{4.0, 4.2}, {5.6, 3.4}, {6.0, 1.8}}, 1.0), 1.1));
+  st.person(3, Motion({3.5, 5.0}, kSouth).wait(60.0));
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
 }
