@@ -77,8 +77,9 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
 
   // Objects first (cheap depth masks), then the people, whose two networks run as two
   // parallel tasks: selfie masks for all people on one core, MoveNet for all on the other.
-  // cv::parallel_for_ runs nested loops serially, so each network then uses one thread; on two
-  // cores this beats running each small network on two threads in turn (bench_perception).
+  // cv::parallel_for_ runs nested loops serially, so each network then uses one thread and no
+  // time goes into per-layer synchronisation of two threads (bench_perception, parallel:1 vs
+  // parallel:0: faster in two of three runs on the loaded dev machine, see docs/perception.md).
   auto t0 = Clock::now();
   std::vector<MaskedObject> objects;
   std::vector<MaskedObject> people;
