@@ -44,6 +44,7 @@ DynamicFilter::~DynamicFilter() = default;
 
 Instances DynamicFilter::segment(const RgbdFrame& input) {
   current_ = FrameDynamics{};
+  current_depth_m_ = input.depth_m;
   if (!enabled_) return Instances::none(input.bgr.size());
   std::optional<ScopedTimer> timer;
   if (timers_) timer.emplace(*timers_, "segmentation");
@@ -55,7 +56,7 @@ Instances DynamicFilter::segment(const RgbdFrame& input) {
 
 cv::Mat DynamicFilter::extractionMask(const Instances& instances) {
   if (!enabled_) return {};
-  cv::Mat allowed = staticExtractionMask(instances, config_.dynamics);
+  cv::Mat allowed = staticExtractionMask(instances, config_.dynamics, current_depth_m_);
   if (!allowed.empty())
     current_.masked_share = 1.0 - double(cv::countNonZero(allowed)) / double(allowed.total());
   return allowed;

@@ -44,6 +44,7 @@ class DynamicFilter {
 
   [[nodiscard]] bool enabled() const { return enabled_; }
   Instances segment(const RgbdFrame& input);
+  /// Uses the depth of the frame last given to segment().
   [[nodiscard]] cv::Mat extractionMask(const Instances& instances);
   void labelKeypoints(Frame& frame, const Instances& instances) const;
   void rejectMovers(Frame& frame);
@@ -63,6 +64,7 @@ class DynamicFilter {
   std::unique_ptr<Segmenter> segmenter_;
   std::string segmenter_name_ = "off";
   FrameDynamics current_;
+  cv::Mat current_depth_m_;  // the frame segment() saw (shallow copy)
   std::vector<FrameDynamics> history_;
   std::unique_ptr<Previous> previous_;
 };

@@ -1,6 +1,7 @@
 #include "dynamics/keypoint_dynamics.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "dynamics/depth_difference.hpp"
@@ -12,14 +13,47 @@ bool isPriorDynamic(const Instance& instance, const DynamicsConfig& config) {
   return std::find(classes.begin(), classes.end(), instance.class_name) != classes.end();
 }
 
-cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config) {
+namespace {
+/// Median of the valid depths under `mask` (0 if none).
+float medianDepth(const cv::Mat& depth_m, const cv::Mat& mask) {
+  std::vector<float> values;
+  for (int y = 0; y < mask.rows; y += 2) {
+    const uint8_t* m = mask.ptr<uint8_t>(y);
+    const float* d = depth_m.ptr<float>(y);
+    for (int x = 0; x < mask.cols; x += 2)
+      if (m[x] && d[x] > 0.f && std::isfinite(d[x])) values.push_back(d[x]);
+  }
+  if (values.empty()) return 0.f;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+/// Pixels of `box` whose depth lies within `band_m` of `centre_m`, set to 255 in `out`.
+void markBoxDepthBand(const cv::Mat& depth_m, const cv::Rect& box, float centre_m, float band_m, cv::Mat& out) {
+  const cv::Rect r = box & cv::Rect(0, 0, depth_m.cols, depth_m.rows);
+  for (int y = r.y; y < r.y + r.height; ++y) {
+    const float* d = depth_m.ptr<float>(y);
+    uint8_t* o = out.ptr<uint8_t>(y);
+    for (int x = r.x; x < r.x + r.width; ++x)
+      if (d[x] > 0.f && std::abs(d[x] - centre_m) < band_m) o[x] = 255;
+  }
+}
+}  // namespace
+
+cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config, const cv::Mat& depth_m) {
   if (instances.labels.empty()) return {};
   cv::Mat prior = cv::Mat::zeros(instances.labels.size(), CV_8U);
   bool any = false;
+  const bool use_depth = !depth_m.empty() && depth_m.size() == prior.size() && config.prior_box_depth_band_m > 0;
   for (const Instance& instance : instances.items) {
     if (!isPriorDynamic(instance, config)) continue;
-    prior.setTo(255, instances.labels == instance.id);
+    const cv::Mat mask = instances.labels == instance.id;
+    prior.setTo(255, mask);
     any = true;
+    if (!use_depth) continue;
+    const float centre_m = medianDepth(depth_m, mask);
+    if (centre_m > 0.f)
+      markBoxDepthBand(depth_m, instance.box, centre_m, static_cast<float>(config.prior_box_depth_band_m), prior);
   }
   if (!any) return {};
   if (config.prior_mask_dilate_px > 0) {

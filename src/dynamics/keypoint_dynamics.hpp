@@ -21,9 +21,12 @@ namespace dynanav {
 bool isPriorDynamic(const Instance& instance, const DynamicsConfig& config);
 
 /// CV_8U mask for the ORB extractor: 255 where features may be extracted, 0 on prior-dynamic
-/// instances grown by prior_mask_dilate_px. Empty when there is nothing to cut out (the
-/// extractor then allows the whole image).
-cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config);
+/// instances grown by prior_mask_dilate_px. Person masks miss parts (a head, an arm, a blurred
+/// frame), so each prior instance's box also claims the pixels whose depth lies within
+/// prior_box_depth_band_m of the mask's median depth (`depth_m` CV_32F; empty: masks only).
+/// Empty when there is nothing to cut out (the extractor then allows the whole image).
+cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config,
+                             const cv::Mat& depth_m = {});
 
 /// Sets features.instance_id from the label image at each keypoint's (distorted) pixel.
 void labelKeypoints(Features& features, const cv::Mat& labels);

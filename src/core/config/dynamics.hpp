@@ -10,6 +10,7 @@ namespace dynanav {
 struct DynamicsConfig {
   std::vector<std::string> prior_dynamic_classes = {"person", "dog", "cat", "horse", "bird"};
   int prior_mask_dilate_px = 10;
+  double prior_box_depth_band_m = 0.4;
   double depth_diff_min_m = 0.10;
   double depth_diff_per_z2 = 0.02;
   double instance_dynamic_share = 0.30;
@@ -24,6 +25,9 @@ struct DynamicsConfig {
     v("prior_mask_dilate_px", prior_mask_dilate_px,
       "prior-dynamic masks are grown by this many pixels before ORB extraction (mask edges lag "
       "fast limbs; ORB's 31 px patch straddles the outline)");
+    v("prior_box_depth_band_m", prior_box_depth_band_m,
+      "a prior object's box also claims pixels within this depth (m) of its mask's median depth "
+      "(catches a head or arm the mask model missed; 0 = masks only)");
     v("depth_diff_min_m", depth_diff_min_m,
       "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint");
     v("depth_diff_per_z2", depth_diff_per_z2,
