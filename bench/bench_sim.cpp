@@ -38,9 +38,15 @@ void BM_RenderFrame(benchmark::State& state, const std::string& scenario, bool n
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK_CAPTURE(BM_RenderFrame, office, std::string("office"), false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_RenderFrame, office_noiseless, std::string("office"), true)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_RenderFrame, loop, std::string("loop"), false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_RenderFrame, office, std::string("office"), false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_RenderFrame, office_noiseless, std::string("office"), true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_RenderFrame, loop, std::string("loop"), false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 /// Encoding the three PNGs of a frame into memory (what writing costs besides the disk).
 void BM_EncodeFrame(benchmark::State& state) {
@@ -59,13 +65,16 @@ void BM_EncodeFrame(benchmark::State& state) {
 BENCHMARK(BM_EncodeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// One image, arg 0 = rgb/depth/mask, arg 1 = PNG strategy (-1 = OpenCV's defaults: SUB filter,
-/// zlib level 1, RLE). Passing IMWRITE_PNG_COMPRESSION makes OpenCV 4.6 try every PNG filter (slow).
+/// zlib level 1, RLE). Passing IMWRITE_PNG_COMPRESSION makes OpenCV 4.6 try every PNG filter
+/// (slow).
 void BM_EncodePng(benchmark::State& state) {
   static Simulator sim(options("office"));
   static const auto frame = sim.render(30);
   cv::Mat depth16;
   frame.depth_m.convertTo(depth16, CV_16U, 5000.0);
-  const cv::Mat& img = state.range(0) == 0 ? frame.bgr : state.range(0) == 1 ? depth16 : frame.instance;
+  const cv::Mat& img = state.range(0) == 0   ? frame.bgr
+                       : state.range(0) == 1 ? depth16
+                                             : frame.instance;
   std::vector<int> params;
   if (state.range(1) >= 0) params = {cv::IMWRITE_PNG_STRATEGY, int(state.range(1))};
   std::vector<uchar> buffer;

@@ -32,8 +32,8 @@ void Mesh::addQuad(const Vec3f& origin, const Vec3f& axis_u, const Vec3f& axis_v
               uv_origin + float(i) * uv_du + float(j) * uv_dv, uv_du, uv_dv, texture);
 }
 
-void Mesh::addQuadFitted(const Vec3f& origin, const Vec3f& axis_u, const Vec3f& axis_v,
-                         int texture, const Vec2f& texture_size) {
+void Mesh::addQuadFitted(const Vec3f& origin, const Vec3f& axis_u, const Vec3f& axis_v, int texture,
+                         const Vec2f& texture_size) {
   addRect(*this, origin, axis_u, axis_v, Vec2f::Zero(), Vec2f(texture_size.x(), 0.0f),
           Vec2f(0.0f, texture_size.y()), texture);
 }
@@ -48,12 +48,12 @@ void Mesh::addBox(const Vec3f& c, const Vec3f& size, const std::array<int, 6>& t
     Vec3f origin, u, v;
   };
   const std::array<Face, 6> faces{{
-      {c + Vec3f(h.x(), h.y(), h.z()), -Z * size.z(), -Y * size.y()},    // +x
-      {c + Vec3f(-h.x(), h.y(), -h.z()), Z * size.z(), -Y * size.y()},   // -x
-      {c + Vec3f(-h.x(), h.y(), -h.z()), X * size.x(), Z * size.z()},    // +y (top)
+      {c + Vec3f(h.x(), h.y(), h.z()), -Z * size.z(), -Y * size.y()},   // +x
+      {c + Vec3f(-h.x(), h.y(), -h.z()), Z * size.z(), -Y * size.y()},  // -x
+      {c + Vec3f(-h.x(), h.y(), -h.z()), X * size.x(), Z * size.z()},   // +y (top)
       {c + Vec3f(-h.x(), -h.y(), h.z()), X * size.x(), -Z * size.z()},  // -y (bottom)
-      {c + Vec3f(-h.x(), h.y(), h.z()), X * size.x(), -Y * size.y()},    // +z
-      {c + Vec3f(h.x(), h.y(), -h.z()), -X * size.x(), -Y * size.y()},   // -z
+      {c + Vec3f(-h.x(), h.y(), h.z()), X * size.x(), -Y * size.y()},   // +z
+      {c + Vec3f(h.x(), h.y(), -h.z()), -X * size.x(), -Y * size.y()},  // -z
   }};
   for (size_t f = 0; f < 6; ++f)
     addQuad(faces[f].origin, faces[f].u, faces[f].v, textures[f], texels_per_m, uv_offsets[f]);

@@ -7,9 +7,15 @@
 namespace dynanav::sim {
 
 namespace {
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-double headingOf(const Vec2& dir) { return std::atan2(dir.x(), dir.y()); }
-double wrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+double headingOf(const Vec2& dir) {
+  return std::atan2(dir.x(), dir.y());
+}
+double wrapAngle(double a) {
+  return std::remainder(a, 2.0 * M_PI);
+}
 }  // namespace
 
 SmoothPath::SmoothPath(const std::vector<Vec2>& pts, double corner_radius_m) {
@@ -89,7 +95,9 @@ Motion& Motion::wait(double seconds) {
   Leg leg;
   leg.t0 = endTime();
   leg.duration = seconds;
-  leg.distance0 = legs_.empty() ? 0.0 : legs_.back().distance0 + (legs_.back().walking ? legs_.back().path.length() : 0.0);
+  leg.distance0 = legs_.empty() ? 0.0
+                                : legs_.back().distance0 +
+                                      (legs_.back().walking ? legs_.back().path.length() : 0.0);
   legs_.push_back(leg);
   return *this;
 }
@@ -102,12 +110,16 @@ Motion& Motion::walk(const SmoothPath& path, double speed_mps, double ramp_s) {
   leg.speed = speed_mps;
   leg.ramp = std::min(ramp_s, path.length() / speed_mps);  // trapezoid needs L >= v * ramp
   leg.duration = path.length() / speed_mps + leg.ramp;
-  leg.distance0 = legs_.empty() ? 0.0 : legs_.back().distance0 + (legs_.back().walking ? legs_.back().path.length() : 0.0);
+  leg.distance0 = legs_.empty() ? 0.0
+                                : legs_.back().distance0 +
+                                      (legs_.back().walking ? legs_.back().path.length() : 0.0);
   legs_.push_back(leg);
   return *this;
 }
 
-double Motion::endTime() const { return legs_.empty() ? 0.0 : legs_.back().t0 + legs_.back().duration; }
+double Motion::endTime() const {
+  return legs_.empty() ? 0.0 : legs_.back().t0 + legs_.back().duration;
+}
 
 const Motion::Leg* Motion::find(double t) const {
   const Leg* found = nullptr;

@@ -25,8 +25,8 @@ class SmoothPath {
   struct Segment {
     bool arc = false;
     double s0 = 0.0, length = 0.0;
-    Vec2 p0 = Vec2::Zero(), dir = Vec2::Zero();  // line
-    Vec2 centre = Vec2::Zero();                  // arc
+    Vec2 p0 = Vec2::Zero(), dir = Vec2::Zero();     // line
+    Vec2 centre = Vec2::Zero();                     // arc
     double radius = 0.0, angle0 = 0.0, turn = 1.0;  // turn: +1 counter-clockwise in (x, z)
   };
   [[nodiscard]] const Segment& find(double s) const;
@@ -46,13 +46,17 @@ struct MotionState {
 /// A sequence of legs: wait, or walk along a path at a cruise speed with optional speed ramps.
 class Motion {
  public:
-  explicit Motion(const Vec2& start, double heading_rad = 0.0) : start_(start), heading0_(heading_rad) {}
+  explicit Motion(const Vec2& start, double heading_rad = 0.0)
+      : start_(start), heading0_(heading_rad) {}
   Motion& wait(double seconds);
   /// Walks `path` (which should start where the previous leg ended) at `speed_mps`; the speed
   /// ramps linearly up and down over `ramp_s` at both ends (0 = constant speed throughout).
   Motion& walk(const SmoothPath& path, double speed_mps, double ramp_s = 0.0);
   /// Turning the body towards a new direction takes this long (visual only: velocity is exact).
-  Motion& turnTime(double seconds) { turn_s_ = seconds; return *this; }
+  Motion& turnTime(double seconds) {
+    turn_s_ = seconds;
+    return *this;
+  }
 
   [[nodiscard]] MotionState at(double t) const;
   [[nodiscard]] double endTime() const;

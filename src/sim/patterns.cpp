@@ -43,7 +43,8 @@ cv::Mat fractalNoise(cv::Size size, float cell, int octaves, Rng& rng) {
   cv::Mat sum = cv::Mat::zeros(size, CV_32F);
   float amplitude = 1.0f, total = 0.0f;
   for (int o = 0; o < octaves && cell >= 1.0f; ++o, cell /= 2.0f, amplitude *= 0.55f) {
-    const int w = std::max(2, int(size.width / cell) + 2), h = std::max(2, int(size.height / cell) + 2);
+    const int w = std::max(2, int(size.width / cell) + 2),
+              h = std::max(2, int(size.height / cell) + 2);
     cv::Mat coarse(h, w, CV_32F);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) coarse.at<float>(y, x) = float(rng.uniform(-1.0, 1.0));
@@ -67,7 +68,8 @@ cv::Mat tinted(const cv::Mat& noise, const cv::Scalar& base, float amplitude) {
     const float* n = noise.ptr<float>(y);
     uint8_t* o = out.ptr<uint8_t>(y);
     for (int x = 0; x < noise.cols; ++x)
-      for (int c = 0; c < 3; ++c) o[3 * x + c] = cv::saturate_cast<uint8_t>(base[c] + amplitude * n[x]);
+      for (int c = 0; c < 3; ++c)
+        o[3 * x + c] = cv::saturate_cast<uint8_t>(base[c] + amplitude * n[x]);
   }
   return out;
 }
@@ -86,13 +88,15 @@ void speckle(cv::Mat& img, int count, int max_radius, Rng& rng) {
   for (int i = 0; i < count; ++i) {
     const cv::Point c(rng.uniformInt(0, img.cols - 1), rng.uniformInt(0, img.rows - 1));
     const int shade = rng.chance(0.5) ? rng.uniformInt(0, 60) : rng.uniformInt(190, 255);
-    cv::circle(img, c, rng.uniformInt(1, max_radius), cv::Scalar::all(shade), cv::FILLED, cv::LINE_AA);
+    cv::circle(img, c, rng.uniformInt(1, max_radius), cv::Scalar::all(shade), cv::FILLED,
+               cv::LINE_AA);
   }
 }
 }  // namespace
 
 cv::Mat plaster(cv::Size size, Rng& rng) {
-  const cv::Scalar base(rng.uniformInt(120, 210), rng.uniformInt(120, 210), rng.uniformInt(120, 210));
+  const cv::Scalar base(rng.uniformInt(120, 210), rng.uniformInt(120, 210),
+                        rng.uniformInt(120, 210));
   cv::Mat img = tinted(fractalNoise(size, 120.0f, 5, rng), base, 45.0f);
   speckle(img, size.area() / 4000, 3, rng);
   return img;
@@ -102,12 +106,14 @@ cv::Mat bricks(cv::Size size, float tpm, Rng& rng) {
   const int bw = std::max(8, int(0.24f * tpm)), bh = std::max(4, int(0.075f * tpm));
   const int mortar = std::max(1, int(0.012f * tpm));
   cv::Mat img(size, CV_8UC3, cv::Scalar(175, 180, 185));
-  const cv::Scalar brick_base(rng.uniformInt(30, 70), rng.uniformInt(50, 90), rng.uniformInt(110, 170));
+  const cv::Scalar brick_base(rng.uniformInt(30, 70), rng.uniformInt(50, 90),
+                              rng.uniformInt(110, 170));
   for (int row = 0, y = 0; y < size.height; ++row, y += bh + mortar) {
     const int shift = (row % 2) * (bw + mortar) / 2;
     for (int x = -shift; x < size.width; x += bw + mortar) {
-      const cv::Scalar c = brick_base + cv::Scalar::all(rng.uniform(-35, 35)) +
-                           cv::Scalar(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-15, 15));
+      const cv::Scalar c =
+          brick_base + cv::Scalar::all(rng.uniform(-35, 35)) +
+          cv::Scalar(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-15, 15));
       cv::rectangle(img, cv::Rect(x, y, bw, bh), c, cv::FILLED);
     }
   }
@@ -173,7 +179,8 @@ cv::Mat ceilingTiles(cv::Size size, float tpm, Rng& rng) {
     for (int x = 0; x < size.width; x += tile) {
       cv::rectangle(img, cv::Rect(x, y, tile, tile), cv::Scalar(120, 125, 130), 2);
       if (rng.chance(0.15))
-        cv::rectangle(img, cv::Rect(x + 4, y + 4, tile - 8, tile - 8), cv::Scalar(250, 252, 255), cv::FILLED);
+        cv::rectangle(img, cv::Rect(x + 4, y + 4, tile - 8, tile - 8), cv::Scalar(250, 252, 255),
+                      cv::FILLED);
     }
   return img;
 }
@@ -209,30 +216,35 @@ cv::Mat fabric(cv::Size size, Rng& rng) {
 cv::Mat cardboard(cv::Size size, Rng& rng) {
   cv::Mat img = tinted(fractalNoise(size, 25.0f, 4, rng), cv::Scalar(80, 135, 185), 25.0f);
   const int tape = size.height / 8;
-  cv::rectangle(img, cv::Rect(0, size.height / 2 - tape / 2, size.width, tape), cv::Scalar(70, 180, 210), cv::FILLED);
+  cv::rectangle(img, cv::Rect(0, size.height / 2 - tape / 2, size.width, tape),
+                cv::Scalar(70, 180, 210), cv::FILLED);
   cv::rectangle(img, cv::Rect(size.width / 10, size.height / 8, size.width / 3, size.height / 4),
                 cv::Scalar(245, 245, 245), cv::FILLED);
   for (int i = 0; i < 3; ++i)
     cv::putText(img, "FRAGILE " + std::to_string(rng.uniformInt(100, 999)),
-                {size.width / 9, size.height / 8 + (i + 1) * size.height / 16}, cv::FONT_HERSHEY_PLAIN,
-                size.width / 400.0, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
-  cv::arrowedLine(img, {size.width * 3 / 4, size.height * 7 / 8}, {size.width * 3 / 4, size.height * 5 / 8},
-                  cv::Scalar(30, 30, 30), 4);
+                {size.width / 9, size.height / 8 + (i + 1) * size.height / 16},
+                cv::FONT_HERSHEY_PLAIN, size.width / 400.0, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
+  cv::arrowedLine(img, {size.width * 3 / 4, size.height * 7 / 8},
+                  {size.width * 3 / 4, size.height * 5 / 8}, cv::Scalar(30, 30, 30), 4);
   speckle(img, size.area() / 2000, 2, rng);
   return img;
 }
 
 cv::Mat headTexture(cv::Size size, Rng& rng) {
-  const cv::Scalar skin = std::array<cv::Scalar, 4>{cv::Scalar(150, 180, 225), cv::Scalar(95, 130, 175),
-                                                    cv::Scalar(60, 85, 120), cv::Scalar(120, 160, 205)}[size_t(rng.uniformInt(0, 3))];
+  const cv::Scalar skin = std::array<cv::Scalar, 4>{
+      cv::Scalar(150, 180, 225), cv::Scalar(95, 130, 175), cv::Scalar(60, 85, 120),
+      cv::Scalar(120, 160, 205)}[size_t(rng.uniformInt(0, 3))];
   const cv::Scalar hair = cv::Scalar::all(rng.uniformInt(10, 80)) + cv::Scalar(0, 10, 20);
   cv::Mat img = tinted(fractalNoise(size, 10.0f, 3, rng), skin, 12.0f);
   cv::rectangle(img, cv::Rect(0, 0, size.width, size.height / 4), hair, cv::FILLED);
   // The face occupies the middle third of the width (the head box's front face).
   const int fx = size.width / 3, fw = size.width / 3, h = size.height;
-  cv::circle(img, {fx + fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30), cv::FILLED);
-  cv::circle(img, {fx + 2 * fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30), cv::FILLED);
-  cv::ellipse(img, {fx + fw / 2, h * 7 / 10}, {fw / 5, h / 20}, 0, 0, 180, cv::Scalar(60, 60, 140), 2);
+  cv::circle(img, {fx + fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30),
+             cv::FILLED);
+  cv::circle(img, {fx + 2 * fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30),
+             cv::FILLED);
+  cv::ellipse(img, {fx + fw / 2, h * 7 / 10}, {fw / 5, h / 20}, 0, 0, 180, cv::Scalar(60, 60, 140),
+              2);
   return img;
 }
 

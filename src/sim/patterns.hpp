@@ -28,7 +28,8 @@ class PhotoLibrary {
   mutable std::vector<cv::Mat> decoded_;
 };
 
-/// Smooth noise in [-1, 1] (CV_32F) with features about `cell` texels wide, `octaves` finer ones added.
+/// Smooth noise in [-1, 1] (CV_32F) with features about `cell` texels wide, `octaves` finer ones
+/// added.
 cv::Mat fractalNoise(cv::Size size, float cell, int octaves, Rng& rng);
 cv::Scalar randomColour(Rng& rng, int lo = 30, int hi = 230);
 

@@ -10,7 +10,8 @@ constexpr float kHipY = 0.88f, kShoulderY = 1.45f;
 constexpr float kThigh = 0.45f, kShin = 0.43f, kUpperArm = 0.30f, kForearm = 0.28f;
 
 /// A box hanging below its joint (the mesh origin), so rotating the mesh swings the limb.
-std::unique_ptr<Mesh> limb(float length, float width, float depth, int texture, float tpm, float offset) {
+std::unique_ptr<Mesh> limb(float length, float width, float depth, int texture, float tpm,
+                           float offset) {
   auto m = std::make_unique<Mesh>();
   m->addBox(Vec3f(0, -length / 2, 0), Vec3f(width, length, depth), texture, tpm, offset);
   return m;
@@ -44,8 +45,9 @@ Person::Person(World& world, Rng& rng, float tpm) {
   parts_[kHead] = std::make_unique<Mesh>();
   const float hw = 0.19f * s, hh = 0.23f * s;
   const Vec2f third(0.22f * tpm, 0.0f);
-  parts_[kHead]->addBox(Vec3f(0, 0, 0), Vec3f(hw, hh, 0.21f * s), {head, head, hair, hair, head, head}, tpm,
-                        {Vec2f(0, 0), Vec2f(0, 0), Vec2f(0, 0), Vec2f(0, 0), third, Vec2f(0.44f * tpm, 0)});
+  parts_[kHead]->addBox(
+      Vec3f(0, 0, 0), Vec3f(hw, hh, 0.21f * s), {head, head, hair, hair, head, head}, tpm,
+      {Vec2f(0, 0), Vec2f(0, 0), Vec2f(0, 0), Vec2f(0, 0), third, Vec2f(0.44f * tpm, 0)});
   parts_[kUpperArmL] = limb(kUpperArm * s, 0.09f * s, 0.10f * s, shirt, tpm, 11.0f);
   parts_[kUpperArmR] = limb(kUpperArm * s, 0.09f * s, 0.10f * s, shirt, tpm, 53.0f);
   parts_[kForearmL] = limb(kForearm * s, 0.075f * s, 0.085f * s, head, tpm, 0.0f);
@@ -56,16 +58,20 @@ Person::Person(World& world, Rng& rng, float tpm) {
   parts_[kShinR] = limb(kShin * s, 0.12f * s, 0.13f * s, trousers, tpm, 71.0f);
   for (Part foot : {kFootL, kFootR}) {
     parts_[foot] = std::make_unique<Mesh>();
-    parts_[foot]->addBox(Vec3f(0, -0.035f * s, 0.05f * s), Vec3f(0.10f, 0.07f, 0.25f) * s, shoes, tpm);
+    parts_[foot]->addBox(Vec3f(0, -0.035f * s, 0.05f * s), Vec3f(0.10f, 0.07f, 0.25f) * s, shoes,
+                         tpm);
   }
 }
 
 void Person::draw(const BodyPose& pose, uint16_t id, std::vector<DrawItem>& out) const {
   const float s = float(scale_);
   Pose3f T_room_body = Pose3f::Identity();
-  T_room_body.linear() = Eigen::AngleAxisf(float(pose.heading_rad), Vec3f::UnitY()).toRotationMatrix();
+  T_room_body.linear() =
+      Eigen::AngleAxisf(float(pose.heading_rad), Vec3f::UnitY()).toRotationMatrix();
   T_room_body.translation() = Vec3f(float(pose.position.x()), 0.0f, float(pose.position.y()));
-  const auto add = [&](Part p, const Pose3f& T_body_part) { out.push_back({parts_[p].get(), T_room_body * T_body_part, id}); };
+  const auto add = [&](Part p, const Pose3f& T_body_part) {
+    out.push_back({parts_[p].get(), T_room_body * T_body_part, id});
+  };
 
   // Gait: one stride (two steps) per ~1.3 m; hips swing +-25 deg, knees bend in the swing
   // phase, arms swing against the legs. rotX(-a) swings a hanging limb forward by a.
@@ -74,7 +80,8 @@ void Person::draw(const BodyPose& pose, uint16_t id, std::vector<DrawItem>& out)
   const float hip = 0.44f * w * float(std::sin(phase));
   const float knee_l = 0.6f * w * float(std::max(0.0, std::sin(phase + 1.2)));
   const float knee_r = 0.6f * w * float(std::max(0.0, std::sin(phase + 1.2 + M_PI)));
-  const float arm = pose.pushing ? 0.85f : 0.35f * w * float(std::sin(phase));  // pushing: hands at ~1 m
+  const float arm =
+      pose.pushing ? 0.85f : 0.35f * w * float(std::sin(phase));  // pushing: hands at ~1 m
   const float elbow = pose.pushing ? 0.2f : 0.25f;
 
   add(kTorso, translate(Vec3f(0, float(torsoCentreHeight()), 0)));
@@ -83,13 +90,15 @@ void Person::draw(const BodyPose& pose, uint16_t id, std::vector<DrawItem>& out)
     const float sign = side == 0 ? 1.0f : -1.0f;  // left leg forward when sin(phase) > 0
     const Pose3f hip_joint = translate(Vec3f(sign * 0.1f * s, kHipY * s, 0)) * rotX(-sign * hip);
     add(side == 0 ? kThighL : kThighR, hip_joint);
-    const Pose3f knee_joint = hip_joint * translate(Vec3f(0, -kThigh * s, 0)) * rotX(side == 0 ? knee_l : knee_r);
+    const Pose3f knee_joint =
+        hip_joint * translate(Vec3f(0, -kThigh * s, 0)) * rotX(side == 0 ? knee_l : knee_r);
     add(side == 0 ? kShinL : kShinR, knee_joint);
     add(side == 0 ? kFootL : kFootR, knee_joint * translate(Vec3f(0, -kShin * s, 0)));
     const float swing = pose.pushing ? arm : -sign * arm;  // arms swing against the legs
     const Pose3f shoulder = translate(Vec3f(sign * 0.245f * s, kShoulderY * s, 0)) * rotX(-swing);
     add(side == 0 ? kUpperArmL : kUpperArmR, shoulder);
-    add(side == 0 ? kForearmL : kForearmR, shoulder * translate(Vec3f(0, -kUpperArm * s, 0)) * rotX(-elbow));
+    add(side == 0 ? kForearmL : kForearmR,
+        shoulder * translate(Vec3f(0, -kUpperArm * s, 0)) * rotX(-elbow));
   }
 }
 

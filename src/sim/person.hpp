@@ -31,7 +31,21 @@ class Person {
   [[nodiscard]] double torsoCentreHeight() const { return 1.17 * scale_; }
 
  private:
-  enum Part { kTorso, kHead, kUpperArmL, kUpperArmR, kForearmL, kForearmR, kThighL, kThighR, kShinL, kShinR, kFootL, kFootR, kParts };
+  enum Part {
+    kTorso,
+    kHead,
+    kUpperArmL,
+    kUpperArmR,
+    kForearmL,
+    kForearmR,
+    kThighL,
+    kThighR,
+    kShinL,
+    kShinR,
+    kFootL,
+    kFootR,
+    kParts
+  };
   std::array<std::unique_ptr<Mesh>, kParts> parts_;
   double scale_ = 1.0;
 };

@@ -44,19 +44,24 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
     const Mesh& mesh = *item.mesh;
     const Pose3f T_camera_mesh = T_camera_world * item.T_world_mesh;
     p_camera.resize(mesh.positions.size());
-    for (size_t i = 0; i < mesh.positions.size(); ++i) p_camera[i] = T_camera_mesh * mesh.positions[i];
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+      p_camera[i] = T_camera_mesh * mesh.positions[i];
     for (const Triangle& t : mesh.triangles) {
-      const Vec3f p[3] = {p_camera[size_t(t.v[0])], p_camera[size_t(t.v[1])], p_camera[size_t(t.v[2])]};
+      const Vec3f p[3] = {p_camera[size_t(t.v[0])], p_camera[size_t(t.v[1])],
+                          p_camera[size_t(t.v[2])]};
       if (p[0].z() < kNearPlaneM && p[1].z() < kNearPlaneM && p[2].z() < kNearPlaneM) continue;
       const Vec3f n = (p[1] - p[0]).cross(p[2] - p[0]);
       if (n.dot(p[0]) >= 0.0f) continue;  // back face: its front normal points away from us
-      const Vec2f uv[3] = {mesh.uvs[size_t(t.v[0])], mesh.uvs[size_t(t.v[1])], mesh.uvs[size_t(t.v[2])]};
+      const Vec2f uv[3] = {mesh.uvs[size_t(t.v[0])], mesh.uvs[size_t(t.v[1])],
+                           mesh.uvs[size_t(t.v[2])]};
       const float area_m2 = 0.5f * n.norm();
       if (area_m2 < 1e-12f) continue;
       const Vec3f n_unit = n / (2.0f * area_m2);
       // Lambert shading with the normal in the world (room) frame: the lights do not follow us.
       const Vec3f n_world = T_camera_world.linear().transpose() * n_unit;
-      const float shade = lighting.ambient + lighting.diffuse * std::max(0.0f, n_world.dot(lighting.towards_light_world));
+      const float shade =
+          lighting.ambient +
+          lighting.diffuse * std::max(0.0f, n_world.dot(lighting.towards_light_world));
       // Mip level from the footprint: texels per metre on the surface, metres per pixel at
       // depth z on a surface tilted by theta is z / (fx cos theta).
       const float uv_area = 0.5f * std::abs((uv[1] - uv[0]).x() * (uv[2] - uv[0]).y() -
@@ -144,9 +149,12 @@ void Rasterizer::rasterRows(int y0, int y1) {
       for (int i = 0; i < 3; ++i) {
         const double a = t.edge[i][0];
         row[i] = t.edge[i][1] * y + t.edge[i][2];
-        if (a > 1e-15) lo = std::max(lo, -row[i] / a);
-        else if (a < -1e-15) hi = std::min(hi, -row[i] / a);
-        else if (row[i] < -1e-12) empty = true;
+        if (a > 1e-15)
+          lo = std::max(lo, -row[i] / a);
+        else if (a < -1e-15)
+          hi = std::min(hi, -row[i] / a);
+        else if (row[i] < -1e-12)
+          empty = true;
       }
       if (empty) continue;
       // Pixels exactly on an edge shared by two triangles belong to both (a z-buffer tie is

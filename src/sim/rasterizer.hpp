@@ -32,8 +32,8 @@ class Rasterizer {
 
   /// Renders the items seen from T_camera_world (camera x right, y down, z forward).
   void render(const PinholeCamera& camera, const Pose3f& T_camera_world,
-              const std::vector<DrawItem>& items, const TextureSet& textures,
-              RenderBuffers& out, const Lighting& lighting = {});
+              const std::vector<DrawItem>& items, const TextureSet& textures, RenderBuffers& out,
+              const Lighting& lighting = {});
 
   /// Screen-space triangle after clipping: plane equations in pixel coordinates.
   struct ScreenTri {

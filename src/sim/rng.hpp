@@ -1,7 +1,8 @@
 #pragma once
 // The simulator's random numbers: a small counter-free generator (SplitMix64) that is identical
 // on every compiler and standard library, so a seed reproduces the same bytes everywhere
-// (std::normal_distribution is implementation-defined). Seeded explicitly and passed in; never global.
+// (std::normal_distribution is implementation-defined). Seeded explicitly and passed in; never
+// global.
 #include <cmath>
 #include <cstdint>
 
@@ -30,7 +31,9 @@ class Rng {
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
   /// Uniform integer in [lo, hi] (inclusive); lo when the range is empty.
-  int uniformInt(int lo, int hi) { return hi <= lo ? lo : lo + int(next() % uint64_t(hi - lo + 1)); }
+  int uniformInt(int lo, int hi) {
+    return hi <= lo ? lo : lo + int(next() % uint64_t(hi - lo + 1));
+  }
   bool chance(double p) { return uniform() < p; }
   /// Standard normal sample (Box–Muller; one of the pair is discarded for simplicity).
   double normal() {

@@ -13,15 +13,20 @@ constexpr double kPi = M_PI;
 constexpr double kNorth = 0.0, kEast = kPi / 2, kSouth = kPi, kWest = -kPi / 2;  // yaw of a front
 // (In the room frame, yaw 0 faces +z and yaw +90 deg faces +x.)
 
-SmoothPath line(const Vec2& a, const Vec2& b) { return SmoothPath({a, b}, 0.0); }
-double headingOf(const Vec2& d) { return std::atan2(d.x(), d.y()); }
+SmoothPath line(const Vec2& a, const Vec2& b) {
+  return SmoothPath({a, b}, 0.0);
+}
+double headingOf(const Vec2& d) {
+  return std::atan2(d.x(), d.y());
+}
 
 /// Shared set-up: the scene, its world builder and the helpers that add movers.
 struct Stage {
   std::unique_ptr<Scene> scene = std::make_unique<Scene>();
   Rng rng;
   WorldBuilder build;
-  Stage(uint64_t seed, const PhotoLibrary& photos, float tpm) : rng(seed), build(scene->world, rng, photos, tpm) {}
+  Stage(uint64_t seed, const PhotoLibrary& photos, float tpm)
+      : rng(seed), build(scene->world, rng, photos, tpm) {}
 
   Mover& person(uint16_t id, const Motion& motion) {
     scene->people.push_back(std::make_unique<Person>(scene->world, rng, build.texelsPerMetre()));
@@ -38,7 +43,8 @@ struct Stage {
   Mover& box(uint16_t id, const Motion& motion, const Vec3f& size_m) {
     auto mesh = std::make_unique<Mesh>();
     const float tpm = build.texelsPerMetre();
-    const int tex = build.texture(cardboard(cv::Size(int(2 * size_m.x() * tpm), int(size_m.y() * tpm)), rng));
+    const int tex =
+        build.texture(cardboard(cv::Size(int(2 * size_m.x() * tpm), int(size_m.y() * tpm)), rng));
     mesh->addBox(Vec3f(0, size_m.y() / 2, 0), size_m, tex, tpm, 0.0f);
     Mover m;
     m.id = id;
@@ -51,7 +57,8 @@ struct Stage {
     return scene->movers.back();
   }
   /// The wearer stands still for `wait_s` (so SLAM can initialise), then walks.
-  void wearer(const std::vector<Vec2>& waypoints, double speed_mps, double corner_radius_m, double wait_s = 0.5) {
+  void wearer(const std::vector<Vec2>& waypoints, double speed_mps, double corner_radius_m,
+              double wait_s = 0.5) {
     const SmoothPath path(waypoints, corner_radius_m);
     scene->wearer = Motion(path.start(), headingOf(path.tangent(0.0)));
     scene->wearer.wait(wait_s).walk(path, speed_mps, 1.0);
@@ -124,7 +131,9 @@ std::unique_ptr<Scene> approach(Stage& st) {
   b.plant({4.5, 12.8});
   b.closedDoor({2.5, 14.0}, kSouth);
   st.wearer({{2.5, 1.0}, {2.5, 12.0}}, 0.8, 1.0);
-  st.person(1, Motion({2.0, 12.5}, kSouth).wait(0.5).walk(line({2.0, 12.5}, {2.0, 1.5}), script::kApproachSpeedMps));
+  st.person(1, Motion({2.0, 12.5}, kSouth)
+                   .wait(0.5)
+                   .walk(line({2.0, 12.5}, {2.0, 1.5}), script::kApproachSpeedMps));
   st.scene->duration_s = 9.0;
   return std::move(st.scene);
 }
@@ -138,12 +147,16 @@ std::unique_ptr<Scene> crossing(Stage& st) {
   }
   const double v_wearer = 0.9, wait = 0.5, ramp = 1.0, x_w = 3.5, z_w0 = 1.8;
   st.wearer({{x_w, z_w0}, {x_w, 5.2}}, v_wearer, 1.0, wait);
-  // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is kCrossingAheadM short of it.
+  // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is kCrossingAheadM short
+  // of it.
   const double start_x = 6.3, t_c = 3.0;
-  const double s_wearer = v_wearer * ramp / 2 + v_wearer * (t_c - wait - ramp);  // trapezoid, past the ramp
+  const double s_wearer =
+      v_wearer * ramp / 2 + v_wearer * (t_c - wait - ramp);  // trapezoid, past the ramp
   const double z_c = z_w0 + s_wearer + script::kCrossingAheadM;
   const double t_start = t_c - (start_x - x_w) / script::kCrossingSpeedMps;
-  st.person(1, Motion({start_x, z_c}, kWest).wait(t_start).walk(line({start_x, z_c}, {1.0, z_c}), script::kCrossingSpeedMps));
+  st.person(1, Motion({start_x, z_c}, kWest)
+                   .wait(t_start)
+                   .walk(line({start_x, z_c}, {1.0, z_c}), script::kCrossingSpeedMps));
   st.scene->duration_s = 7.0;
   return std::move(st.scene);
 }
@@ -153,9 +166,13 @@ std::unique_ptr<Scene> office(Stage& st) {
   // The wearer first faces the desks behind the west partition (within depth range, for the
   // SLAM to start on), then turns up the aisle.
   st.wearer({{4.2, 0.6}, {2.6, 1.6}, {3.2, 3.8}, {4.4, 6.2}}, 0.7, 1.6);
-  st.person(1, Motion({6.3, 5.8}, kWest).wait(1.0).walk(SmoothPath({{6.3, 5.8}, {2.0, 5.8}, {2.0, 4.9}}, 0.6), 1.2));
+  st.person(1, Motion({6.3, 5.8}, kWest)
+                   .wait(1.0)
+                   .walk(SmoothPath({{6.3, 5.8}, {2.0, 5.8}, {2.0, 4.9}}, 0.6), 1.2));
   st.person(2, Motion({2.2, 6.8}, kSouth).wait(0.5).walk(line({2.2, 6.8}, {2.4, 2.2}), 1.0));
-  st.person(3, Motion({6.0, 2.9}, kNorth).walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7));
+  st.person(
+      3,
+      Motion({6.0, 2.9}, kNorth).walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7));
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
 }
@@ -182,23 +199,32 @@ std::unique_ptr<Scene> pushedBox(Stage& st) {
   Motion walker({0.9, 5.4}, kSouth);
   walker.wait(1.0).walk(SmoothPath({{0.9, 5.4}, {1.4, 4.5}, stand}, 0.5), 1.0);
   const double push_from = walker.endTime() + 0.3;
-  walker.wait(0.3).walk(line(stand, stand + push_dir * script::kPushDistanceM), script::kPushSpeedMps);
+  walker.wait(0.3).walk(line(stand, stand + push_dir * script::kPushDistanceM),
+                        script::kPushSpeedMps);
   const double push_to = walker.endTime();
   const Vec2 after = stand + push_dir * script::kPushDistanceM;
   walker.wait(0.5).walk(SmoothPath({after, after + Vec2(-0.3, 0.9), {1.0, 5.4}}, 0.6), 1.1);
   Mover& person = st.person(1, walker);
   person.pushing_from = push_from;
   person.pushing_to = push_to;
-  st.box(2, Motion(box_start, kEast).wait(push_from).walk(line(box_start, box_start + push_dir * script::kPushDistanceM), script::kPushSpeedMps), box_size);
+  st.box(2,
+         Motion(box_start, kEast)
+             .wait(push_from)
+             .walk(line(box_start, box_start + push_dir * script::kPushDistanceM),
+                   script::kPushSpeedMps),
+         box_size);
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
 }
 
 std::unique_ptr<Scene> loop(Stage& st) {
   WorldBuilder& b = st.build;
-  // Two rooms side by side; the wearer leaves A through one doorway and comes back through the other.
-  b.room({0, 0}, {6, 6}, 2.7, {{Doorway::kEast, 1.0, 2.0, 2.1, true}, {Doorway::kEast, 4.0, 5.0, 2.1, true}});
-  b.room({6.1, 0}, {12.1, 6}, 2.7, {{Doorway::kWest, 1.0, 2.0, 2.1, false}, {Doorway::kWest, 4.0, 5.0, 2.1, false}});
+  // Two rooms side by side; the wearer leaves A through one doorway and comes back through the
+  // other.
+  b.room({0, 0}, {6, 6}, 2.7,
+         {{Doorway::kEast, 1.0, 2.0, 2.1, true}, {Doorway::kEast, 4.0, 5.0, 2.1, true}});
+  b.room({6.1, 0}, {12.1, 6}, 2.7,
+         {{Doorway::kWest, 1.0, 2.0, 2.1, false}, {Doorway::kWest, 4.0, 5.0, 2.1, false}});
   b.shelf({0.18, 1.5}, kEast, 1.2);
   b.shelf({0.18, 4.5}, kEast, 1.2);
   b.desk({4.2, 3.0}, kSouth);
@@ -235,7 +261,9 @@ std::unique_ptr<Scene> standing(Stage& st) {
   st.wearer({{3.5, 1.4}, {3.5, 2.2}}, 0.8, 1.0);
   // Three people chat in a group; at t = 3 s the second walks off towards the east wall.
   st.person(1, Motion({2.8, 4.4}, kEast).wait(60.0));
-  st.person(2, Motion({4.0, 4.2}, kWest).wait(3.0).walk(SmoothPath({{4.0, 4.2}, {5.6, 3.4}, {6.0, 1.8}}, 1.0), 1.1));
+  st.person(2, Motion({4.0, 4.2}, kWest)
+                   .wait(3.0)
+                   .walk(SmoothPath({{4.0, 4.2}, {5.6, 3.4}, {6.0, 1.8}}, 1.0), 1.1));
   st.person(3, Motion({3.5, 5.0}, kSouth).wait(60.0));
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
@@ -244,10 +272,12 @@ std::unique_ptr<Scene> standing(Stage& st) {
 using Factory = std::function<std::unique_ptr<Scene>(Stage&)>;
 const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
   static const std::vector<std::pair<ScenarioInfo, Factory>> list{
-      {{"static-room", "a furnished room, nobody else in it; the wearer walks a gentle curve"}, staticRoom},
+      {{"static-room", "a furnished room, nobody else in it; the wearer walks a gentle curve"},
+       staticRoom},
       {{"approach", "a person walks straight at the wearer down a long room at 1.0 m/s"}, approach},
       {{"crossing", "a person crosses the wearer's path 2 m ahead at 1.4 m/s"}, crossing},
-      {{"office", "three people walk about an office while the wearer walks (demo default)"}, office},
+      {{"office", "three people walk about an office while the wearer walks (demo default)"},
+       office},
       {{"pushed-box", "a person pushes a box 1 m and walks away (a non-prior mover)"}, pushedBox},
       {{"loop", "the wearer walks a ~21 m loop through two rooms and back to the start"}, loop},
       {{"standing", "three people stand and talk; after 3 s one walks off"}, standing},
@@ -265,8 +295,8 @@ const std::vector<ScenarioInfo>& scenarioList() {
   return infos;
 }
 
-std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed, const PhotoLibrary& photos,
-                                     float texels_per_m) {
+std::unique_ptr<Scene> buildScenario(const std::string& name, uint64_t seed,
+                                     const PhotoLibrary& photos, float texels_per_m) {
   for (const auto& [info, factory] : registry()) {
     if (info.name != name) continue;
     Stage stage(seed, photos, texels_per_m);

@@ -5,7 +5,8 @@
 namespace dynanav::sim {
 
 Mat3 cameraRotation(double yaw, double pitch, double roll) {
-  const Vec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
+  const Vec3 forward(std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                     std::cos(yaw) * std::cos(pitch));
   const Vec3 right0 = forward.cross(Vec3::UnitY()).normalized();  // room y is up
   const Vec3 down0 = forward.cross(right0);
   // Roll turns the image clockwise for positive angles (right side dips).
@@ -22,8 +23,9 @@ SE3 Scene::T_room_camera(double t) const {
   // Sway grows with walking speed; the stride phase follows the distance walked (as for people).
   const double amount = std::min(1.0, st.velocity.norm() / h.nominal_speed_mps);
   const double phase = 2.0 * M_PI * st.distance_m / 1.4;
-  const double look = h.look_around_rad * std::sin(2.0 * M_PI * t / h.look_period_s) +
-                      0.4 * h.look_around_rad * std::sin(2.0 * M_PI * t / (0.37 * h.look_period_s) + 1.0);
+  const double look =
+      h.look_around_rad * std::sin(2.0 * M_PI * t / h.look_period_s) +
+      0.4 * h.look_around_rad * std::sin(2.0 * M_PI * t / (0.37 * h.look_period_s) + 1.0);
   const double yaw = st.heading_rad + look + amount * h.yaw_sway_rad * std::sin(phase);
   const double pitch = h.pitch_rad + amount * h.pitch_sway_rad * std::sin(2.0 * phase) +
                        0.3 * h.look_around_rad * std::sin(2.0 * M_PI * t / (1.3 * h.look_period_s));
@@ -33,8 +35,10 @@ SE3 Scene::T_room_camera(double t) const {
   const double breathe = 0.003 * std::sin(2.0 * M_PI * t / 4.0);
   SE3 T = SE3::Identity();
   T.linear() = cameraRotation(yaw, pitch, roll);
-  T.translation() = Vec3(st.position.x(), h.eye_height_m + breathe + amount * h.bob_m * std::cos(2.0 * phase), st.position.y()) +
-                    left_of_path * (amount * h.sway_m * std::sin(phase));
+  T.translation() =
+      Vec3(st.position.x(), h.eye_height_m + breathe + amount * h.bob_m * std::cos(2.0 * phase),
+           st.position.y()) +
+      left_of_path * (amount * h.sway_m * std::sin(phase));
   return T;
 }
 

@@ -27,13 +27,13 @@ struct Mover {
 /// How the wearer's head moves on top of the walked path.
 struct HeadMotion {
   double eye_height_m = 1.6;
-  double pitch_rad = -0.14;        ///< looking slightly down, as head-worn cameras do
-  double bob_m = 0.02;             ///< vertical, twice per stride
-  double sway_m = 0.015;           ///< lateral, once per stride
-  double yaw_sway_rad = 0.015;     ///< once per stride
-  double pitch_sway_rad = 0.012;   ///< twice per stride
-  double roll_sway_rad = 0.012;    ///< once per stride
-  double look_around_rad = 0.05;   ///< slow yaw wander (period look_period_s)
+  double pitch_rad = -0.14;       ///< looking slightly down, as head-worn cameras do
+  double bob_m = 0.02;            ///< vertical, twice per stride
+  double sway_m = 0.015;          ///< lateral, once per stride
+  double yaw_sway_rad = 0.015;    ///< once per stride
+  double pitch_sway_rad = 0.012;  ///< twice per stride
+  double roll_sway_rad = 0.012;   ///< once per stride
+  double look_around_rad = 0.05;  ///< slow yaw wander (period look_period_s)
   double look_period_s = 7.0;
   double nominal_speed_mps = 1.0;  ///< speed at which the sway amplitudes apply in full
 };

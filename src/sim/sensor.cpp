@@ -49,7 +49,8 @@ class NormalStream {
 constexpr uint64_t kDepthStream = 1, kHoleStream = 2, kColourStream = 3;
 }  // namespace
 
-cv::Mat simulateDepth(const cv::Mat& depth_true, const DepthSensorModel& m, uint64_t seed, int frame) {
+cv::Mat simulateDepth(const cv::Mat& depth_true, const DepthSensorModel& m, uint64_t seed,
+                      int frame) {
   CV_Assert(depth_true.type() == CV_32F);
   cv::Mat z_max, z_min;
   const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
@@ -63,7 +64,9 @@ cv::Mat simulateDepth(const cv::Mat& depth_true, const DepthSensorModel& m, uint
       Rng drop = Rng::stream(seed, uint64_t(frame), uint64_t(y), kHoleStream);
       // Dropped pixels by geometric gaps: one draw per dropout rather than one per pixel.
       const double log_keep = std::log1p(-std::clamp(m.dropout_probability, 1e-12, 0.5));
-      const auto gap = [&] { return int(std::min(1e9, std::floor(std::log(1.0 - drop.uniform()) / log_keep))); };
+      const auto gap = [&] {
+        return int(std::min(1e9, std::floor(std::log(1.0 - drop.uniform()) / log_keep)));
+      };
       int next_drop = m.dropout_probability > 0 ? gap() : depth_true.cols;
       const float* z = depth_true.ptr<float>(y);
       const float* zmax = z_max.ptr<float>(y);
@@ -74,7 +77,8 @@ cv::Mat simulateDepth(const cv::Mat& depth_true, const DepthSensorModel& m, uint
         const float n = noise.next();  // drawn for every pixel: the stream stays aligned
         const bool dropped = x == next_drop;
         if (dropped) next_drop = x + 1 + gap();
-        const bool edge = zmin[x] <= 0.0f || zmax[x] - zmin[x] > m.edge_jump_m + m.edge_jump_rel * zt;
+        const bool edge =
+            zmin[x] <= 0.0f || zmax[x] - zmin[x] > m.edge_jump_m + m.edge_jump_rel * zt;
         if (zt < m.min_depth_m || zt > m.max_depth_m || edge || dropped) {
           o[x] = 0.0f;
           continue;
@@ -96,17 +100,20 @@ cv::Mat simulateDepth(const cv::Mat& depth_true, const DepthSensorModel& m, uint
   return out;
 }
 
-void simulateColour(cv::Mat& bgr, const ColourSensorModel& m, uint64_t seed, int frame, double t, bool noise) {
+void simulateColour(cv::Mat& bgr, const ColourSensorModel& m, uint64_t seed, int frame, double t,
+                    bool noise) {
   if (m.blur_sigma_px > 0) cv::GaussianBlur(bgr, bgr, {3, 3}, m.blur_sigma_px);
   if (!noise) return;
   const double phase = double(Rng::stream(seed, 0, 0, kColourStream).uniform()) * 2.0 * M_PI;
-  const float gain = float(1.0 + m.exposure_amplitude * std::sin(2.0 * M_PI * t / m.exposure_period_s + phase));
+  const float gain =
+      float(1.0 + m.exposure_amplitude * std::sin(2.0 * M_PI * t / m.exposure_period_s + phase));
   const float sigma = float(m.noise_sigma);
   cv::parallel_for_(cv::Range(0, bgr.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       NormalStream n(Rng::stream(seed, uint64_t(frame), uint64_t(y), kColourStream));
       uint8_t* p = bgr.ptr<uint8_t>(y);
-      for (int i = 0; i < bgr.cols * 3; ++i) p[i] = cv::saturate_cast<uint8_t>(p[i] * gain + sigma * n.next());
+      for (int i = 0; i < bgr.cols * 3; ++i)
+        p[i] = cv::saturate_cast<uint8_t>(p[i] * gain + sigma * n.next());
     }
   });
 }

@@ -20,20 +20,20 @@ std::ofstream listFile(const fs::path& path, const std::string& what, const SimO
   std::ofstream out(path);
   if (!out) throw InputError(path.string(), "cannot write");
   // The three comment lines of TUM's list files.
-  out << "# " << what << "\n# file: 'dynanav simulate --scenario " << o.scenario << " --seed " << o.seed
-      << "'\n# timestamp filename\n";
+  out << "# " << what << "\n# file: 'dynanav simulate --scenario " << o.scenario << " --seed "
+      << o.seed << "'\n# timestamp filename\n";
   return out;
 }
 
 void writePng(const fs::path& path, const cv::Mat& image) {
   // OpenCV's PNG defaults are its fast path (SUB filter, zlib level 1, RLE); asking for a
   // compression level makes it try every PNG filter, three times slower (bench_sim BM_EncodePng).
-  if (!cv::imwrite(path.string(), image))
-    throw InputError(path.string(), "cannot write image");
+  if (!cv::imwrite(path.string(), image)) throw InputError(path.string(), "cannot write image");
 }
 }  // namespace
 
-WriteStats writeSequence(Simulator& sim, const fs::path& out_dir, const std::function<void(int)>& progress) {
+WriteStats writeSequence(Simulator& sim, const fs::path& out_dir,
+                         const std::function<void(int)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   for (const char* sub : {"rgb", "depth", "masks"}) fs::create_directories(out_dir / sub);
   saveCameraYaml(out_dir / "camera.yaml", sim.camera());

@@ -8,8 +8,12 @@
 namespace dynanav::sim {
 
 namespace {
-double round6(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }  // + 0.0: no "-0.0" in files
-nlohmann::json vec(const Vec3& v) { return {round6(v.x()), round6(v.y()), round6(v.z())}; }
+double round6(double v) {
+  return std::round(v * 1e6) / 1e6 + 0.0;
+}  // + 0.0: no "-0.0" in files
+nlohmann::json vec(const Vec3& v) {
+  return {round6(v.x()), round6(v.y()), round6(v.z())};
+}
 }  // namespace
 
 Simulator::Simulator(const SimOptions& options) : options_(options) {
@@ -20,7 +24,8 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
     throw InputError("texels_per_m", "must be in [10, 1000]");
   const PhotoLibrary photos = options.photos ? PhotoLibrary::systemDefault() : PhotoLibrary();
   scene_ = buildScenario(options.scenario, options.seed, photos, options.texels_per_m);
-  frames_ = options.frames > 0 ? options.frames : std::max(1, int(std::lround(scene_->duration_s * options.fps)));
+  frames_ = options.frames > 0 ? options.frames
+                               : std::max(1, int(std::lround(scene_->duration_s * options.fps)));
   camera_.name = "dynanav-sim";
   camera_.width = 640;
   camera_.height = 480;
@@ -35,7 +40,9 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
 
 Simulator::~Simulator() = default;
 
-double Simulator::stamp(int i) const { return std::stod(stampName(double(i) / options_.fps)); }
+double Simulator::stamp(int i) const {
+  return std::stod(stampName(double(i) / options_.fps));
+}
 
 std::string Simulator::stampName(double stamp_s) {
   char buffer[32];
@@ -64,14 +71,17 @@ SimFrame Simulator::render(int i) {
   f.T_world_camera = i == 0 ? SE3::Identity() : SE3(T_world_room_ * T_room_camera);
   drawItems(i, items_);
   Lighting lighting;
-  lighting.towards_light_world = T_world_room_.linear().cast<float>() * lighting.towards_light_world;
+  lighting.towards_light_world =
+      T_world_room_.linear().cast<float>() * lighting.towards_light_world;
   RenderBuffers buffers;
-  rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_, scene_->world.textures, buffers, lighting);
+  rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_,
+                     scene_->world.textures, buffers, lighting);
   f.bgr = buffers.bgr;
   f.depth_true_m = buffers.depth_m;
   f.instance = buffers.instance;
   simulateColour(f.bgr, options_.colour, options_.seed, i, f.stamp_s, !options_.noiseless);
-  f.depth_m = options_.noiseless ? f.depth_true_m.clone() : simulateDepth(f.depth_true_m, options_.depth, options_.seed, i);
+  f.depth_m = options_.noiseless ? f.depth_true_m.clone()
+                                 : simulateDepth(f.depth_true_m, options_.depth, options_.seed, i);
 
   // Ground truth of every mover, visible or not (points = 0 when out of view).
   std::vector<int> pixels(1 << 16, 0);

@@ -18,11 +18,12 @@ namespace dynanav::sim {
 
 struct SimOptions {
   std::string scenario = "office";
-  int frames = 0;          ///< 0 = the scenario's own length
+  int frames = 0;  ///< 0 = the scenario's own length
   uint64_t seed = 1;
   double fps = 30.0;
-  bool noiseless = false;  ///< exact depth everywhere (no noise, range limits, holes), no colour noise
-  bool photos = true;      ///< posters may use Debian's opencv-doc images when installed
+  bool noiseless =
+      false;           ///< exact depth everywhere (no noise, range limits, holes), no colour noise
+  bool photos = true;  ///< posters may use Debian's opencv-doc images when installed
   float texels_per_m = 200.0f;  ///< texture resolution on surfaces
   DepthSensorModel depth;
   ColourSensorModel colour;

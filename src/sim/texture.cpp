@@ -42,8 +42,8 @@ void Texture::sample(float u, float v, int l, float out_bgr[3]) const {
   const uint8_t* r1 = img.ptr<uint8_t>(y1);
   const float w00 = (1 - ax) * (1 - ay), w10 = ax * (1 - ay), w01 = (1 - ax) * ay, w11 = ax * ay;
   for (int c = 0; c < 3; ++c)
-    out_bgr[c] = w00 * r0[3 * x0 + c] + w10 * r0[3 * x1 + c] + w01 * r1[3 * x0 + c] +
-                 w11 * r1[3 * x1 + c];
+    out_bgr[c] =
+        w00 * r0[3 * x0 + c] + w10 * r0[3 * x1 + c] + w01 * r1[3 * x0 + c] + w11 * r1[3 * x1 + c];
 }
 
 }  // namespace dynanav::sim

@@ -1,6 +1,6 @@
 #pragma once
-// Textures for the rasteriser: a BGR image with its mip pyramid, sampled bilinearly with wrap-around.
-// Texture coordinates are texels of level 0; level l is sampled at (u, v) / 2^l.
+// Textures for the rasteriser: a BGR image with its mip pyramid, sampled bilinearly with
+// wrap-around. Texture coordinates are texels of level 0; level l is sampled at (u, v) / 2^l.
 #include <opencv2/core.hpp>
 #include <vector>
 

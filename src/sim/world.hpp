@@ -35,7 +35,8 @@ class WorldBuilder {
       : world_(world), rng_(rng), photos_(photos), tpm_(texels_per_m) {}
 
   /// An axis-aligned room [min, max] on the floor, `height_m` tall, walls decorated.
-  void room(const Vec2& min, const Vec2& max, double height_m, const std::vector<Doorway>& doorways = {});
+  void room(const Vec2& min, const Vec2& max, double height_m,
+            const std::vector<Doorway>& doorways = {});
   // Furniture stands on the floor at `at`, its front facing `yaw_rad` ((sin, cos) in (x, z)).
   void desk(const Vec2& at, double yaw_rad);
   void chair(const Vec2& at, double yaw_rad);

@@ -1,5 +1,6 @@
 // The renderer against an independent ray caster: every pixel's noiseless depth must be the
-// distance along the pixel's ray to the nearest triangle, and its mask label that triangle's object.
+// distance along the pixel's ray to the nearest triangle, and its mask label that triangle's
+// object.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -44,13 +45,16 @@ Hit castRay(const std::vector<CameraTriangle>& tris, const Vec3& dir) {
   return best;
 }
 
-std::vector<CameraTriangle> cameraTriangles(const std::vector<DrawItem>& items, const SE3& T_world_camera) {
+std::vector<CameraTriangle> cameraTriangles(const std::vector<DrawItem>& items,
+                                            const SE3& T_world_camera) {
   const SE3 T_camera_world = T_world_camera.inverse();
   std::vector<CameraTriangle> out;
   for (const DrawItem& item : items) {
     const SE3 T = T_camera_world * item.T_world_mesh.cast<double>();
     for (const Triangle& tri : item.mesh->triangles) {
-      const auto at = [&](int k) { return Vec3(T * item.mesh->positions[size_t(tri.v[size_t(k)])].cast<double>()); };
+      const auto at = [&](int k) {
+        return Vec3(T * item.mesh->positions[size_t(tri.v[size_t(k)])].cast<double>());
+      };
       out.push_back({at(0), at(1), at(2), item.instance_id});
     }
   }
@@ -66,7 +70,8 @@ void expectMatchesRayCaster(const std::string& scenario, int frame_index, bool n
   options.texels_per_m = 80.0f;  // geometry does not depend on texture resolution
   Simulator sim(options);
   const SimFrame frame = sim.render(frame_index);
-  ASSERT_EQ(cv::countNonZero(frame.depth_m != frame.depth_true_m), 0) << "noiseless depth must be exact";
+  ASSERT_EQ(cv::countNonZero(frame.depth_m != frame.depth_true_m), 0)
+      << "noiseless depth must be exact";
   uint16_t must_see_id = 0;
   int most_points = 0;
   for (const auto& o : frame.objects["objects"])
@@ -96,16 +101,23 @@ void expectMatchesRayCaster(const std::string& scenario, int frame_index, bool n
         worst_agreeing_error = std::max(worst_agreeing_error, std::abs(hit.z - z));
       }
     }
-  EXPECT_GE(agree, samples * 995 / 1000) << scenario << " frame " << frame_index << ": " << agree << " of " << samples;
+  EXPECT_GE(agree, samples * 995 / 1000)
+      << scenario << " frame " << frame_index << ": " << agree << " of " << samples;
   EXPECT_LT(worst_agreeing_error, 2e-3);
   if (need_mover) {
     EXPECT_GT(saw_id, 10) << "the ray caster should also hit object " << must_see_id;
   }
 }
 
-TEST(SimGeometry, OfficeDepthAndMasksMatchRayCasting) { expectMatchesRayCaster("office", 135, true); }
-TEST(SimGeometry, PushedBoxDepthAndMasksMatchRayCasting) { expectMatchesRayCaster("pushed-box", 120, true); }
-TEST(SimGeometry, LoopDoorwayMatchesRayCasting) { expectMatchesRayCaster("loop", 240, false); }
+TEST(SimGeometry, OfficeDepthAndMasksMatchRayCasting) {
+  expectMatchesRayCaster("office", 135, true);
+}
+TEST(SimGeometry, PushedBoxDepthAndMasksMatchRayCasting) {
+  expectMatchesRayCaster("pushed-box", 120, true);
+}
+TEST(SimGeometry, LoopDoorwayMatchesRayCasting) {
+  expectMatchesRayCaster("loop", 240, false);
+}
 
 TEST(SimGeometry, QuadAtKnownDepth) {
   // A 2 x 2 m wall 3 m ahead, facing the camera: every covered pixel has depth 3.

@@ -67,7 +67,8 @@ TEST(SimScenarios, ObjectsGroundTruthSpeedsAreTheScriptedOnes) {
       ++moving;
       EXPECT_NEAR(obj["speed"].get<double>(), script::kCrossingSpeedMps, 1e-6);
       const auto v = obj["velocity_world"];
-      EXPECT_NEAR(std::hypot(double(v[0]), double(v[1]), double(v[2])), script::kCrossingSpeedMps, 1e-5);
+      EXPECT_NEAR(std::hypot(double(v[0]), double(v[1]), double(v[2])), script::kCrossingSpeedMps,
+                  1e-5);
     } else {
       EXPECT_EQ(obj["speed"].get<double>(), 0.0);
     }
@@ -91,7 +92,8 @@ TEST(SimScenarios, CrossingPassesTwoMetresAhead) {
     if (dx < best) best = dx, t_cross = t;
   }
   EXPECT_LT(best, 0.002);
-  const double ahead = walker.motion.at(t_cross).position.y() - scene.wearer.at(t_cross).position.y();
+  const double ahead =
+      walker.motion.at(t_cross).position.y() - scene.wearer.at(t_cross).position.y();
   EXPECT_NEAR(ahead, script::kCrossingAheadM, 0.01);
   EXPECT_NEAR(walker.motion.scriptedSpeed(t_cross), script::kCrossingSpeedMps, 1e-12);
 }
@@ -106,7 +108,8 @@ TEST(SimScenarios, PushedBoxMovesOneMetreAtPushSpeed) {
   const Vec3 start = scene.moverCentre(*box, 0.0), end = scene.moverCentre(*box, scene.duration_s);
   EXPECT_NEAR((end - start).norm(), script::kPushDistanceM, 1e-9);
   double max_speed = 0.0;
-  for (double t = 0; t < scene.duration_s; t += 0.01) max_speed = std::max(max_speed, scene.moverVelocity(*box, t).norm());
+  for (double t = 0; t < scene.duration_s; t += 0.01)
+    max_speed = std::max(max_speed, scene.moverVelocity(*box, t).norm());
   EXPECT_NEAR(max_speed, script::kPushSpeedMps, 1e-12);
   EXPECT_EQ(sim.masksJson()["instances"]["2"]["class"], "box");
 }
@@ -137,12 +140,14 @@ TEST(SimCamera, FirstPoseIsIdentityAndMotionIsTrackable) {
     Simulator sim(quick(info.name));
     const Scene& scene = sim.scene();
     const double dt = 1.0 / sim.options().fps;
-    EXPECT_TRUE((sim.T_world_room() * scene.T_room_camera(sim.stamp(0))).isApprox(SE3::Identity(), 1e-12));
+    EXPECT_TRUE(
+        (sim.T_world_room() * scene.T_room_camera(sim.stamp(0))).isApprox(SE3::Identity(), 1e-12));
     double max_speed = 0, max_rate_deg = 0;
     for (int i = 1; i < sim.frameCount(); ++i) {
       const SE3 a = scene.T_room_camera(sim.stamp(i - 1)), b = scene.T_room_camera(sim.stamp(i));
       max_speed = std::max(max_speed, (b.translation() - a.translation()).norm() / dt);
-      max_rate_deg = std::max(max_rate_deg, rotationAngle(a.linear().transpose() * b.linear()) / dt * 180.0 / M_PI);
+      max_rate_deg = std::max(
+          max_rate_deg, rotationAngle(a.linear().transpose() * b.linear()) / dt * 180.0 / M_PI);
     }
     // A head-worn camera at walking pace: no jumps, turns a feature tracker can follow.
     EXPECT_LT(max_speed, 1.3) << info.name;

@@ -39,9 +39,9 @@ TEST(SimSensor, NoDepthOutOfRangeOrAtDiscontinuities) {
   model.holes_per_frame = 0;
   model.dropout_probability = 0.0;
   cv::Mat truth(100, 100, CV_32F, cv::Scalar(2.0));
-  truth(cv::Rect(50, 0, 50, 100)) = 3.0;   // a 1 m step at column 50
-  truth(cv::Rect(0, 80, 100, 20)) = 5.0;   // beyond the 4.5 m range
-  truth(cv::Rect(0, 0, 100, 5)) = 0.3;     // too close
+  truth(cv::Rect(50, 0, 50, 100)) = 3.0;  // a 1 m step at column 50
+  truth(cv::Rect(0, 80, 100, 20)) = 5.0;  // beyond the 4.5 m range
+  truth(cv::Rect(0, 0, 100, 5)) = 0.3;    // too close
   const cv::Mat noisy = simulateDepth(truth, model, 1, 0);
   for (int y = 10; y < 70; ++y) {
     EXPECT_EQ(noisy.at<float>(y, 49), 0.0f);

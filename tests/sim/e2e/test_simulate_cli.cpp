@@ -40,7 +40,10 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
 TEST(SimulateCli, WritesATumSequenceWithGroundTruth) {
   const fs::path out = scratchDir("sim") / "crossing";
   std::string log;
-  ASSERT_EQ(runCli("simulate --scenario crossing --out " + out.string() + " --frames 40 --seed 3", &log), 0) << log;
+  ASSERT_EQ(
+      runCli("simulate --scenario crossing --out " + out.string() + " --frames 40 --seed 3", &log),
+      0)
+      << log;
 
   const auto rgb = dataLines(out / "rgb.txt"), depth = dataLines(out / "depth.txt");
   ASSERT_EQ(rgb.size(), 40u);
@@ -51,8 +54,10 @@ TEST(SimulateCli, WritesATumSequenceWithGroundTruth) {
 
   const auto gt = readTrajectory(out / "groundtruth.txt");
   ASSERT_EQ(gt.size(), 40u);
-  EXPECT_TRUE(gt[0].T_world_camera.isApprox(SE3::Identity(), 1e-12)) << "world = first camera frame";
-  EXPECT_GT(gt.back().T_world_camera.translation().z(), 0.2) << "the wearer walks forward (camera z)";
+  EXPECT_TRUE(gt[0].T_world_camera.isApprox(SE3::Identity(), 1e-12))
+      << "world = first camera frame";
+  EXPECT_GT(gt.back().T_world_camera.translation().z(), 0.2)
+      << "the wearer walks forward (camera z)";
 
   const PinholeCamera cam = loadCameraYaml(out / "camera.yaml");
   EXPECT_EQ(cam.width, 640);
@@ -67,8 +72,8 @@ TEST(SimulateCli, WritesATumSequenceWithGroundTruth) {
   ASSERT_EQ(objects.size(), 40u);
   EXPECT_DOUBLE_EQ(objects[1]["t"].get<double>(), 0.033333);
   const auto& o = objects[39]["objects"][0];
-  for (const char* key : {"id", "class", "dynamic", "position_world", "position_camera", "distance", "bearing_deg",
-                          "clock", "velocity_world", "speed", "points"})
+  for (const char* key : {"id", "class", "dynamic", "position_world", "position_camera", "distance",
+                          "bearing_deg", "clock", "velocity_world", "speed", "points"})
     EXPECT_TRUE(o.contains(key)) << key;
 
   // Images: 8-bit colour, 16-bit depth and masks, same size; mask ids are the listed instances,
@@ -96,20 +101,24 @@ TEST(SimulateCli, WritesATumSequenceWithGroundTruth) {
 TEST(SimulateCli, SameSeedSameBytes) {
   const fs::path dir = scratchDir("sim");
   for (const char* run : {"a", "b"})
-    ASSERT_EQ(runCli("simulate --scenario office --frames 8 --seed 11 --out " + (dir / run).string()), 0);
-  ASSERT_EQ(runCli("simulate --scenario office --frames 8 --seed 12 --out " + (dir / "c").string()), 0);
+    ASSERT_EQ(
+        runCli("simulate --scenario office --frames 8 --seed 11 --out " + (dir / run).string()), 0);
+  ASSERT_EQ(runCli("simulate --scenario office --frames 8 --seed 12 --out " + (dir / "c").string()),
+            0);
   const auto a = snapshot(dir / "a"), b = snapshot(dir / "b"), c = snapshot(dir / "c");
   ASSERT_EQ(a.size(), 8u * 3u + 6u) << "3 images per frame, 4 lists, camera.yaml, masks.json";
   EXPECT_TRUE(a == b) << "a seed must reproduce every file byte for byte";
   EXPECT_NE(a.at("rgb/0.100000.png"), c.at("rgb/0.100000.png"));
   EXPECT_NE(a.at("depth/0.100000.png"), c.at("depth/0.100000.png"));
-  EXPECT_EQ(a.at("groundtruth.txt"), c.at("groundtruth.txt")) << "the choreography does not depend on the seed";
+  EXPECT_EQ(a.at("groundtruth.txt"), c.at("groundtruth.txt"))
+      << "the choreography does not depend on the seed";
 }
 
 TEST(SimulateCli, ListsScenarios) {
   std::string out;
   ASSERT_EQ(runCli("simulate --list", &out), 0);
-  for (const char* name : {"static-room", "approach", "crossing", "office", "pushed-box", "loop", "standing"})
+  for (const char* name :
+       {"static-room", "approach", "crossing", "office", "pushed-box", "loop", "standing"})
     EXPECT_NE(out.find(name), std::string::npos) << name;
   ASSERT_EQ(runCli("simulate --help", &out), 0);
   EXPECT_NE(out.find("pushed-box"), std::string::npos) << "the help names the scenarios";
@@ -125,8 +134,10 @@ TEST(SimulateCli, BadInputExitsWithCodeTwoAndSaysWhy) {
   EXPECT_NE(out.find("--out"), std::string::npos) << out;
   EXPECT_EQ(runCli("simulate --out " + (dir / "y").string(), &out), 2) << "no --scenario";
   EXPECT_EQ(runCli("simulate --scenario office --fps 0 --out " + (dir / "z").string(), &out), 2);
-  EXPECT_EQ(runCli("simulate --scenario office --frames -3 --out " + (dir / "z").string(), &out), 2);
-  EXPECT_EQ(runCli("simulate --scenario office --frames ten --out " + (dir / "z").string(), &out), 2);
+  EXPECT_EQ(runCli("simulate --scenario office --frames -3 --out " + (dir / "z").string(), &out),
+            2);
+  EXPECT_EQ(runCli("simulate --scenario office --frames ten --out " + (dir / "z").string(), &out),
+            2);
   EXPECT_FALSE(fs::exists(dir / "x")) << "nothing written for a bad scenario";
 }
 
@@ -137,12 +148,17 @@ TEST(SimulateCli, ShortStaticRoomThroughRunAndEval) {
   const fs::path seq = dir / "static-room";
   ASSERT_EQ(runCli("simulate --scenario static-room --frames 150 --out " + seq.string()), 0);
   std::string log;
-  const int code = runCli("run " + seq.string() + " --out " + (dir / "run").string() + " --deterministic", &log);
-  if (log.find("not built yet") != std::string::npos) GTEST_SKIP() << "'dynanav run' is not built yet: " << log;
+  const int code =
+      runCli("run " + seq.string() + " --out " + (dir / "run").string() + " --deterministic", &log);
+  if (log.find("not built yet") != std::string::npos)
+    GTEST_SKIP() << "'dynanav run' is not built yet: " << log;
   ASSERT_EQ(code, 0) << log;
   std::string eval;
   ASSERT_EQ(runCli("eval --json --gt " + (seq / "groundtruth.txt").string() + " --est " +
-                       (dir / "run" / "trajectory.txt").string() + " --sequence " + seq.string(), &eval), 0) << eval;
+                       (dir / "run" / "trajectory.txt").string() + " --sequence " + seq.string(),
+                   &eval),
+            0)
+      << eval;
   const auto result = nlohmann::json::parse(eval.substr(eval.find('{')));
   EXPECT_EQ(result["coverage"]["tracked_frames"], 150) << "every frame tracked";
   EXPECT_LE(result["ate_m"]["rmse"].get<double>(), 0.005) << "issue 5: ATE <= 5 mm on static-room";
