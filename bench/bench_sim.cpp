@@ -2,6 +2,7 @@
 // (640x480). Run: build/<dir>/bin/bench_sim ; whole-CLI throughput: see docs/simulator.md.
 #include <benchmark/benchmark.h>
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "sim/simulator.hpp"
@@ -47,6 +48,21 @@ BENCHMARK_CAPTURE(BM_RenderFrame, office_noiseless, std::string("office"), true)
 BENCHMARK_CAPTURE(BM_RenderFrame, loop, std::string("loop"), false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+/// The same on one thread: the CPU cost of a frame, whatever else runs on the machine.
+void BM_RenderFrameOneThread(benchmark::State& state) {
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  Simulator sim(options("office"));
+  int i = 0;
+  for (auto _ : state) {
+    auto frame = sim.render(i);
+    benchmark::DoNotOptimize(frame.bgr.data);
+    i = (i + 1) % sim.frameCount();
+  }
+  cv::setNumThreads(threads);
+}
+BENCHMARK(BM_RenderFrameOneThread)->Unit(benchmark::kMillisecond);
 
 /// Encoding the three PNGs of a frame into memory (what writing costs besides the disk).
 void BM_EncodeFrame(benchmark::State& state) {
