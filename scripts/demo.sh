@@ -9,6 +9,7 @@ out=${1:-demo_out}
 frames=${2:-300}
 
 bash scripts/setup.sh
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 cmake --preset release >/dev/null
 cmake --build --preset release --target dynanav_cli
 cli=build/release/bin/dynanav
