@@ -14,6 +14,12 @@ std::vector<fs::path> modelSearchPath(const std::string& explicit_dir) {
   if (const char* env = std::getenv("DYNANAV_MODELS"); env && *env) dirs.emplace_back(env);
   dirs.emplace_back(fs::current_path() / "models");
   dirs.emplace_back(fs::current_path() / ".." / "shared" / "models");
+  // Next to an installed or copied binary: <bin>/models and <prefix>/share/dynanav/models.
+  std::error_code ec;
+  if (const fs::path exe = fs::read_symlink("/proc/self/exe", ec); !ec && !exe.empty()) {
+    dirs.emplace_back(exe.parent_path() / "models");
+    dirs.emplace_back(exe.parent_path() / ".." / "share" / "dynanav" / "models");
+  }
 #ifdef DYNANAV_PERCEPTION_SOURCE_DIR
   // A developer running <repo>/build/x/bin/dynanav from anywhere still finds the shared models.
   dirs.emplace_back(fs::path(DYNANAV_PERCEPTION_SOURCE_DIR) / ".." / "shared" / "models");

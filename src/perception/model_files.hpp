@@ -17,8 +17,9 @@ inline constexpr const char* kMoveNet = "movenet-singlepose-lightning/movenet_si
 }  // namespace model_files
 
 /// The folders searched for models, in order: `explicit_dir` (--models or config) if not empty,
-/// $DYNANAV_MODELS, ./models, ../shared/models from the current directory, and ../shared/models
-/// next to the source tree this binary was built from.
+/// $DYNANAV_MODELS, ./models, ../shared/models from the current directory, <binary's folder>/models,
+/// <binary's folder>/../share/dynanav/models, and ../shared/models next to the source tree this
+/// binary was built from.
 std::vector<std::filesystem::path> modelSearchPath(const std::string& explicit_dir);
 
 /// The first folder of the search path holding all `required` files; empty if none does.

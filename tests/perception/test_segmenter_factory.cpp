@@ -90,3 +90,18 @@ TEST(DepthMasks, ModeAndBoxMaskPickTheNearObject) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ModelFiles, SearchPathOrder) {
+  setenv("DYNANAV_MODELS", "/env/models", 1);
+  const auto dirs = modelSearchPath("");
+  unsetenv("DYNANAV_MODELS");
+  ASSERT_GE(dirs.size(), 5u);
+  EXPECT_EQ(dirs[0], fs::path("/env/models"));
+  EXPECT_EQ(dirs[1], fs::current_path() / "models");
+  EXPECT_EQ(dirs[2], fs::current_path() / ".." / "shared" / "models");
+  EXPECT_EQ(dirs[3].filename(), "models");  // next to the test binary
+}
+
+}  // namespace
