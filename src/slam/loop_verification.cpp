@@ -100,7 +100,10 @@ std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current, const std::vecto
                                           g.descriptors, g.keypoints, {},
                                           [&](int i) { return good(current.map_points[i]) && f.usable[i]; });
     std::erase_if(bow_matches, [&](const cv::DMatch& m) { return !good(candidate->map_points[m.trainIdx]); });
-    if (static_cast<int>(bow_matches.size()) < config.loop_min_bow_matches) continue;
+    if (static_cast<int>(bow_matches.size()) < config.loop_min_bow_matches) {
+      spdlog::debug("loop kf {} vs {}: {} bow matches, too few", current.id, candidate->id, bow_matches.size());
+      continue;
+    }
     // 3D-3D pairs, each in its own camera: RANSAC finds T_candidate_current.
     std::vector<Vec3> a, b;
     std::vector<double> b_depth;
