@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <future>
+#include <memory>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -91,7 +92,7 @@ RunSummary runSequence(const RunOptions& options) {
                sequence.camera().name, sequence.cameraSource());
 
   System system(options.config, sequence.camera(), options.sequence_dir);
-  TrajectoryWriter trajectory(options.out_dir / "trajectory.txt");
+  auto trajectory = std::make_unique<TrajectoryWriter>(options.out_dir / "trajectory.txt");
   RunSummary summary;
   size_t total = sequence.size();
   if (options.max_frames > 0) total = std::min<size_t>(total, options.max_frames);
@@ -119,7 +120,7 @@ RunSummary runSequence(const RunOptions& options) {
     ++summary.frames;
     if (result.tracked) {
       ++summary.tracked;
-      trajectory.write({result.stamp_s, result.T_world_camera});
+      trajectory->write({result.stamp_s, result.T_world_camera});
     } else if (result.state == TrackingState::kLost) {
       ++summary.lost;
     }
@@ -134,6 +135,12 @@ RunSummary runSequence(const RunOptions& options) {
   if (options.progress) std::fprintf(stderr, "\n");
   summary.initialised = system.numKeyFrames() > 0;
   writeTrajectory(options.out_dir / "keyframes.txt", system.keyframePoses());
+  // The run is complete: keep the poses as tracked, and replace trajectory.txt by every frame
+  // re-anchored on its (since optimised) reference keyframe, as ORB-SLAM2 saves its trajectory.
+  trajectory.reset();
+  std::filesystem::copy_file(options.out_dir / "trajectory.txt", options.out_dir / "trajectory_online.txt",
+                             std::filesystem::copy_options::overwrite_existing, ec);
+  writeTrajectory(options.out_dir / "trajectory.txt", system.refinedTrajectory());
   nlohmann::json stats = statsJson(summary, system, wall_s);
   stats["dynamics"] = system.dynamicsSummary();  // issue 7
   writeJsonFile(options.out_dir / "stats.json", stats);

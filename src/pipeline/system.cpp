@@ -66,6 +66,8 @@ FrameResult System::process(const RgbdFrame& input) {
   }
   dynamics_->verifyPriors(input, instances, frame, outcome.state == TrackingState::kOk);  // 7. scene flow
   mapping_->runPending();                             // 10. local mapping (inline when deterministic)
+  if (outcome.state == TrackingState::kOk && outcome.reference)
+    anchors_.push_back({input.stamp_s, outcome.reference, frame.T_camera_world * outcome.reference->T_world_camera()});
   FrameResult result = makeResult(input, frame, outcome);
   result.latency_ms = latency.stop();
   return result;                                      // 11. writers consume the result
@@ -119,6 +121,15 @@ std::vector<LoopEvent> System::loops() const {
 }
 
 nlohmann::json System::dynamicsSummary() const { return dynamics_->summary(); }
+
+std::vector<StampedPose> System::refinedTrajectory() const {
+  std::unique_lock lock(map_->mutex());
+  std::vector<StampedPose> poses;
+  poses.reserve(anchors_.size());
+  for (const auto& a : anchors_)
+    poses.push_back({a.stamp_s, anchoredPose(*a.reference, a.T_frame_reference).inverse()});
+  return poses;
+}
 
 LocalMapperStats System::mappingStats() const { return mapping_->stats(); }
 

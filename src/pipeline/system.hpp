@@ -22,6 +22,7 @@ class OrbExtractor;
 class Map;
 class MappingStage;
 class Tracker;
+class KeyFrame;
 class DynamicFilter;
 class Vocabulary;
 class PlaceIndex;
@@ -45,6 +46,9 @@ class System {
 
   /// Keyframe poses (T_world_camera) ordered by time, as optimised so far.
   [[nodiscard]] std::vector<StampedPose> keyframePoses() const;
+  /// Every tracked frame's pose re-anchored on its reference keyframe as that is now (after
+  /// later bundle adjustments), as ORB-SLAM2 saves its trajectory.
+  [[nodiscard]] std::vector<StampedPose> refinedTrajectory() const;
   [[nodiscard]] const StageTimers& timers() const { return timers_; }
   [[nodiscard]] LocalMapperStats mappingStats() const;
   [[nodiscard]] size_t numMapPoints() const;
@@ -76,6 +80,12 @@ class System {
   std::unique_ptr<Relocaliser> relocaliser_;
   std::unique_ptr<LoopCloser> loop_closer_;
   uint64_t next_frame_id_ = 0;
+  struct FrameAnchor {
+    double stamp_s;
+    std::shared_ptr<KeyFrame> reference;
+    SE3 T_frame_reference;
+  };
+  std::vector<FrameAnchor> anchors_;  ///< one per tracked frame
 };
 
 }  // namespace dynanav

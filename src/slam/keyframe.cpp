@@ -111,6 +111,11 @@ void KeyFrame::setBad() {
   connections.clear();
   ordered_covisible.clear();
   ordered_weights.clear();
+  // Frames that referred to this keyframe keep their pose through the parent (ORB-SLAM2 mTcp).
+  if (parent) {
+    T_camera_parent = T_camera_world_ * parent->T_world_camera();
+    parent_when_culled = parent->shared_from_this();
+  }
   // Re-parent children: each takes its strongest covisible keyframe that is already in the
   // tree (a simplification of ORB-SLAM2's greedy reassignment), else this keyframe's parent.
   for (KeyFrame* child : children) {

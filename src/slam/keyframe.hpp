@@ -15,7 +15,7 @@
 
 namespace dynanav {
 
-class KeyFrame {
+class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
  public:
   KeyFrame(uint64_t id, uint64_t frame_id, double stamp_s, Features features,
            const SE3& T_camera_world, std::vector<MapPointPtr> map_points);
@@ -39,6 +39,10 @@ class KeyFrame {
   std::vector<KeyFrame*> ordered_covisible;  ///< by weight desc, then id
   std::vector<int> ordered_weights;
   KeyFrame* parent = nullptr;  ///< spanning tree
+  /// Set when culled: the parent and the pose relative to it (ORB-SLAM2 mTcp), owning, so frames
+  /// anchored on a culled keyframe can still follow later corrections of the tree.
+  std::shared_ptr<KeyFrame> parent_when_culled;
+  SE3 T_camera_parent = SE3::Identity();
   std::set<KeyFrame*, KeyFrameIdLess> children;
   bool bad = false;
 
@@ -78,5 +82,21 @@ class KeyFrame {
 };
 
 using KeyFramePtr = std::shared_ptr<KeyFrame>;
+
+}  // namespace dynanav
+
+namespace dynanav {
+
+/// Current world-to-camera pose of a frame tracked at T_frame_reference relative to `reference`,
+/// following culled keyframes up the spanning tree (how ORB-SLAM2 writes its final trajectory).
+inline SE3 anchoredPose(const KeyFrame& reference, const SE3& T_frame_reference) {
+  SE3 T = T_frame_reference;
+  const KeyFrame* kf = &reference;
+  while (kf->bad && kf->parent_when_culled) {
+    T = T * kf->T_camera_parent;
+    kf = kf->parent_when_culled.get();
+  }
+  return T * kf->T_camera_world();
+}
 
 }  // namespace dynanav

@@ -2,6 +2,53 @@
 
 namespace dynanav {
 
+namespace {
+
+/// Observations of the indexed points in the indexed keyframes.
+void addObservations(BaProblem& problem, const LocalBaIndex& index) {
+  std::map<const KeyFrame*, int> slot;
+  for (size_t k = 0; k < index.keyframes.size(); ++k) slot[index.keyframes[k]] = static_cast<int>(k);
+  problem.points.reserve(index.points.size());
+  for (size_t j = 0; j < index.points.size(); ++j) {
+    const MapPointPtr& p = index.points[j];
+    problem.points.push_back({p->id, p->p_world});
+    for (const auto& [kf, i] : p->observations) {
+      const auto it = slot.find(kf);
+      if (it == slot.end()) continue;
+      const Features& f = kf->features;
+      BaObservation obs;
+      obs.keyframe = it->second;
+      obs.point = static_cast<int>(j);
+      obs.keypoint = i;
+      obs.u = f.points[i].x;
+      obs.v = f.points[i].y;
+      obs.u_right = f.u_right[i];
+      obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
+      problem.observations.push_back(obs);
+    }
+  }
+}
+
+}  // namespace
+
+BaProblem buildGlobalBa(const Map& map, LocalBaIndex& index) {
+  BaProblem problem;
+  for (const auto& [id, kf] : map.keyframes()) {
+    if (kf->bad) continue;
+    if (problem.keyframes.empty()) {
+      const PinholeCamera& cam = *kf->features.camera;
+      problem.camera = {cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
+    }
+    problem.keyframes.push_back({kf->id, kf->T_camera_world(), kf->id == 0});
+    index.keyframes.push_back(kf.get());
+  }
+  for (const auto& [id, p] : map.points()) {
+    if (!p->bad) index.points.push_back(p);
+  }
+  addObservations(problem, index);
+  return problem;
+}
+
 BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index) {
   BaProblem problem;
   const PinholeCamera& cam = *keyframe.features.camera;
@@ -34,27 +81,7 @@ BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index) {
       add_keyframe(kf, true);
     }
   }
-  std::map<const KeyFrame*, int> slot;
-  for (size_t k = 0; k < index.keyframes.size(); ++k) slot[index.keyframes[k]] = static_cast<int>(k);
-  problem.points.reserve(index.points.size());
-  for (size_t j = 0; j < index.points.size(); ++j) {
-    const MapPointPtr& p = index.points[j];
-    problem.points.push_back({p->id, p->p_world});
-    for (const auto& [kf, i] : p->observations) {
-      const auto it = slot.find(kf);
-      if (it == slot.end()) continue;
-      const Features& f = kf->features;
-      BaObservation obs;
-      obs.keyframe = it->second;
-      obs.point = static_cast<int>(j);
-      obs.keypoint = i;
-      obs.u = f.points[i].x;
-      obs.v = f.points[i].y;
-      obs.u_right = f.u_right[i];
-      obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
-      problem.observations.push_back(obs);
-    }
-  }
+  addObservations(problem, index);
   return problem;
 }
 

@@ -147,6 +147,29 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
   ++stats_.bundle_adjustments;
 }
 
+void LocalMapper::finalBundleAdjustment() {
+  if (config_.final_ba_iterations <= 0) return;
+  const auto start = std::chrono::steady_clock::now();
+  BaProblem problem;
+  LocalBaIndex index;
+  {
+    std::unique_lock lock(map_.mutex());
+    if (map_.numKeyFrames() < 2) return;
+    problem = buildGlobalBa(map_, index);
+  }
+  BaOptions options;
+  options.iterations_first = config_.final_ba_iterations;
+  options.iterations_second = config_.final_ba_iterations;
+  options.linear_solver = config_.ba_linear_solver;
+  const BaResult result = bundleAdjust(problem, options);
+  std::unique_lock lock(map_.mutex());
+  applyLocalBa(problem, result, index);
+  map_.removeBad();
+  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", problem.keyframes.size(),
+                problem.points.size(), result.initial_rms_px, result.final_rms_px);
+  if (timers_) timers_->add("final_ba", msSince(start));
+}
+
 void LocalMapper::cullRedundantKeyFrames(KeyFrame& keyframe) {
   const int min_observers = config_.redundant_min_observers;
   for (KeyFrame* kf : keyframe.covisibleAtLeast(0)) {

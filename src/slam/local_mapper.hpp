@@ -30,6 +30,11 @@ class LocalMapper {
   /// behind it) fusion, BA and keyframe culling are skipped, as ORB-SLAM2 does to catch up.
   void process(const KeyFramePtr& keyframe, bool more_waiting = false);
 
+  /// Bundle adjustment over the whole map (keyframe 0 fixed) at the end of a run, so that
+  /// keyframes.txt and the re-anchored trajectory hold the final optimisation. No-op when
+  /// mapping.final_ba_iterations is 0.
+  void finalBundleAdjustment();
+
   [[nodiscard]] const LocalMapperStats& stats() const { return stats_; }
 
  private:

@@ -38,6 +38,14 @@ bool MappingStage::accepts() const {
 }
 
 void MappingStage::finish() {
+  drain();
+  if (!final_done_) {
+    final_done_ = true;
+    mapper_.finalBundleAdjustment();
+  }
+}
+
+void MappingStage::drain() {
   if (!threaded_) {
     runPending();
     return;

@@ -29,7 +29,8 @@ class MappingStage {
   [[nodiscard]] bool idle() const;
   /// The queue has room for another keyframe.
   [[nodiscard]] bool accepts() const;
-  /// Processes everything still queued and stops the worker (idempotent).
+  /// Processes everything still queued, stops the worker and runs the final whole-map bundle
+  /// adjustment (idempotent).
   void finish();
   /// Counters of the local mapper (read after finish() in threaded mode).
   [[nodiscard]] LocalMapperStats stats() const { return mapper_.stats(); }
@@ -39,6 +40,7 @@ class MappingStage {
 
  private:
   void workerLoop();
+  void drain();
 
   LocalMapper mapper_;
   const bool threaded_;
@@ -48,6 +50,7 @@ class MappingStage {
   std::deque<KeyFramePtr> queue_;
   bool busy_ = false;
   bool stopping_ = false;
+  bool final_done_ = false;
   std::thread worker_;
   std::function<void(const KeyFramePtr&)> sink_;
 };

@@ -48,6 +48,7 @@ bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
   local_.reference = kf;
   last_keyframe_frame_id_ = frame.id;
   outcome.new_keyframe = kf;
+  outcome.reference = kf;
   outcome.inliers = with_depth;
   return true;
 }

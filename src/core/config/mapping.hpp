@@ -20,6 +20,7 @@ struct MappingConfig {
   double redundant_keyframe_ratio = 0.9;
   int redundant_min_observers = 3;
   int queue_capacity = 3;
+  int final_ba_iterations = 10;
   template <class V> void visit(V&& v) {
     v("covisibility_min_weight", covisibility_min_weight,
       "shared map points for two keyframes to count as covisible");
@@ -38,6 +39,8 @@ struct MappingConfig {
     v("redundant_min_observers", redundant_min_observers,
       "other keyframes that must see a point at the same or finer scale for redundancy");
     v("queue_capacity", queue_capacity, "keyframes waiting for local mapping (threaded mode)");
+    v("final_ba_iterations", final_ba_iterations,
+      "iterations per pass of the whole-map bundle adjustment at the end of a run (0 = none)");
   }
 };
 

@@ -26,7 +26,7 @@ TEST(RunFr1Xyz, TracksEveryFrameAccurately) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const fs::path out = test::scratchDir("run_fr1_xyz");
   std::string log;
-  const int code = test::runCli("run " + seq.string() + " --out " + out.string() + " --quiet", &log);
+  const int code = test::runCli("run " + seq.string() + " --out " + out.string() + " --dynamic off --quiet", &log);
   ASSERT_EQ(code, 0) << log;
   for (const char* name : {"trajectory.txt", "keyframes.txt", "stats.json", "config_used.yaml"})
     EXPECT_TRUE(fs::exists(out / name)) << name;
@@ -53,7 +53,7 @@ TEST(RunFr1Xyz, DeterministicModeIsBitIdentical) {
     const fs::path out = test::scratchDir("determinism_" + std::to_string(run));
     std::string log;
     ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() +
-                               " --deterministic --max-frames 90 --quiet",
+                               " --deterministic --max-frames 90 --dynamic off --quiet",
                            &log),
               0)
         << log;
@@ -74,7 +74,7 @@ TEST(RunFr1Xyz, ThreadedModeTracksEveryFrame) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const fs::path out = test::scratchDir("run_fr1_xyz_realtime");
   std::string log;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --realtime --quiet", &log), 0)
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --realtime --dynamic off --quiet", &log), 0)
       << log;
   const auto stats = readJsonFile(out / "stats.json");
   EXPECT_EQ(stats["tracked"], 244);
@@ -86,7 +86,7 @@ TEST(RunFr1Xyz, BlackoutIsLostThenRecovered) {
   const fs::path out = test::scratchDir("run_fr1_xyz_blackout");
   std::string log;
   ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() +
-                             " --blackout 40:49 --max-frames 80 --quiet",
+                             " --blackout 40:49 --max-frames 80 --dynamic off --quiet",
                          &log),
             0)
       << log;
@@ -107,7 +107,7 @@ TEST(RunFr1Xyz, NeverInitialisedExitsWithThree) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const std::filesystem::path out = test::scratchDir("run_never_init");
   std::string log;
-  EXPECT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --blackout 0:9 --max-frames 10 --quiet", &log), 3)
+  EXPECT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --blackout 0:9 --max-frames 10 --dynamic off --quiet", &log), 3)
       << log;
 }
 }  // namespace
