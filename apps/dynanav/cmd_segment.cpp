@@ -1,7 +1,6 @@
 // dynanav segment SEQ_DIR --out DIR: label PNGs, masks.json, an overlay video and stats.json.
 #include <spdlog/spdlog.h>
 
-#include <malloc.h>
 
 #include <opencv2/core/utility.hpp>
 
@@ -46,11 +45,6 @@ void registerSegment(CLI::App& root, Action& chosen) {
       options.video = !args->no_video;
       options.contact_sheets = args->contact_sheets;
       if (options.perception.threads > 0) cv::setNumThreads(options.perception.threads);
-      // Keep freed frame-sized buffers in the heap: glibc otherwise maps and unmaps each
-      // multi-MB image buffer, and the page faults of fresh pages cost up to ~15 ms per
-      // 2.4 MB buffer on the dev machine (bench_perception, docs/perception.md).
-      mallopt(M_MMAP_THRESHOLD, 32 << 20);
-      mallopt(M_TRIM_THRESHOLD, 128 << 20);
       const SegmentRunSummary s = runSegmentation(options);
       spdlog::info("segment: {} frames with {} ({} skipped), a person in {}; masks in {}{}", s.frames,
                    s.segmenter, s.skipped, s.frames_with_person, (options.out_dir / "masks").string(),

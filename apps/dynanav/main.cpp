@@ -1,4 +1,5 @@
 // dynanav command-line entry point: subcommands per DESIGN.md §2.
+#include <malloc.h>
 #include <spdlog/spdlog.h>
 
 #include <iostream>
@@ -7,6 +8,11 @@
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
+  // Keep freed frame-sized buffers in the heap: glibc otherwise maps and unmaps each multi-MB
+  // image buffer, and the page faults of fresh pages cost up to ~15 ms per 2.4 MB buffer on the
+  // dev machine (bench_perception, docs/perception.md). Every per-frame command benefits.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 128 << 20);
   CLI::App app{"dynanav: dynamic RGB-D SLAM and navigation assistance for blind and visually "
                "impaired walkers"};
   app.require_subcommand(1);
