@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -33,6 +35,15 @@ RgbdFrame blackFrame(const RgbdFrame& like, const PinholeCamera& camera) {
   f.bgr = cv::Mat::zeros(size, CV_8UC3);
   f.depth_m = cv::Mat::zeros(size, CV_32F);
   return f;
+}
+
+/// CPU seconds (user + system, all threads) this process has used: a steadier throughput
+/// measure than wall time on a shared machine.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 nlohmann::json statsJson(const RunSummary& s, const System& system, double wall_s) {
@@ -71,6 +82,7 @@ nlohmann::json statsJson(const RunSummary& s, const System& system, double wall_
           {"points_triangulated", mapping.new_points_triangulated},
           {"bundle_adjustments", mapping.bundle_adjustments},
           {"wall_s", wall_s},
+          {"cpu_s", processCpuSeconds()},
           {"fps", wall_s > 0 ? s.frames / wall_s : 0.0},
           {"stage_ms", stages},
           {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},

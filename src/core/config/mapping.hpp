@@ -30,7 +30,8 @@ struct MappingConfig {
     v("recent_point_min_found_ratio", recent_point_min_found_ratio,
       "a new point found in fewer than this share of frames where it was visible is culled");
     v("recent_point_min_observations", recent_point_min_observations,
-      "a new point seen by fewer keyframes two keyframes after its creation is culled");
+      "a new point with at most this many observations (one with depth counts 2) two keyframes "
+      "after its creation is culled");
     v("ba_iterations_first", ba_iterations_first, "local BA iterations before outlier removal");
     v("ba_iterations_second", ba_iterations_second, "local BA iterations after outlier removal");
     v("ba_linear_solver", ba_linear_solver, "Ceres linear solver: sparse_schur | dense_schur");

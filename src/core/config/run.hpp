@@ -19,7 +19,7 @@ struct RunConfig {
     v("deterministic", deterministic, "single thread, identical results run to run");
     v("segmenter", segmenter, "auto | dnn | hog | masks | none");
     v("segment_every", segment_every, "run the segmenter every k-th frame, propagate between");
-    v("realtime", realtime, "pace input at the sequence's frame rate and drop frames on overload");
+    v("realtime", realtime, "local mapping in its own thread beside tracking (--realtime; not bit-reproducible)");
     v("max_frames", max_frames, "process at most this many frames (0 = all)");
   }
 };
