@@ -60,5 +60,25 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
   EXPECT_LE(drift_on * 5.0, drift_off);
 }
 
+TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarning) {
+  const fs::path seq = test::scratchDir("loop_novoc_seq");
+  std::string log;
+  ASSERT_EQ(test::runCli("simulate --scenario static-room --frames 12 --fps 10 --out " + seq.string(), &log), 0) << log;
+  const fs::path config = test::scratchDir("loop_novoc_cfg") / "novoc.yaml";
+  std::ofstream(config) << "loop:\n  vocabulary: " << (seq / "missing.dnvoc").string() << "\n";
+  const fs::path out = test::scratchDir("loop_novoc_out");
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --config " + config.string() + " --quiet",
+                         &log),
+            0)
+      << log;
+  const std::string warning = "relocalisation and loop closing disabled";
+  const auto first = log.find(warning);
+  ASSERT_NE(first, std::string::npos) << log;
+  EXPECT_EQ(log.find(warning, first + 1), std::string::npos) << "said once";
+  EXPECT_NE(log.find("missing.dnvoc"), std::string::npos) << "names the file";
+  const auto stats = readJsonFile(out / "stats.json");
+  EXPECT_EQ(stats["loops"], 0);
+}
+
 }  // namespace
 }  // namespace dynanav
