@@ -1,5 +1,8 @@
 #include "dynamics/dynamic_filter.hpp"
 
+#include <algorithm>
+#include <deque>
+#include <map>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
@@ -7,13 +10,17 @@
 
 namespace dynanav {
 
-/// The last frame's grey image, depth, prior objects and pose, for scene flow.
+/// Recent frames (grey image, depth, instances, pose) for scene flow over a few frames.
 struct DynamicFilter::Previous {
-  cv::Mat grey_small;
-  cv::Mat depth_m;
-  Instances instances;
-  SE3 T_camera_world = SE3::Identity();
-  bool tracked = false;
+  struct Snapshot {
+    cv::Mat grey_small;
+    cv::Mat depth_m;
+    Instances instances;
+    SE3 T_camera_world = SE3::Identity();
+    bool tracked = false;
+  };
+  std::deque<Snapshot> frames;  // oldest first, at most scene_flow_gap_frames
+  cv::Mat moving_mask;          // CV_8U: non-prior instances found moving in the last frame
   cv::Ptr<cv::DISOpticalFlow> dis = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
 };
 
@@ -44,6 +51,7 @@ DynamicFilter::~DynamicFilter() = default;
 
 Instances DynamicFilter::segment(const RgbdFrame& input) {
   current_ = FrameDynamics{};
+  depth_voted_.clear();
   current_depth_m_ = input.depth_m;
   if (!enabled_) return Instances::none(input.bgr.size());
   std::optional<ScopedTimer> timer;
@@ -57,6 +65,21 @@ Instances DynamicFilter::segment(const RgbdFrame& input) {
 cv::Mat DynamicFilter::extractionMask(const Instances& instances) {
   if (!enabled_) return {};
   cv::Mat allowed = staticExtractionMask(instances, config_.dynamics, current_depth_m_);
+  // A non-prior object found moving in the last frame (scene flow or depth vote) is still
+  // moving now: cut it out before its keypoints reach the pose or the map.
+  const cv::Mat& moving = previous_->moving_mask;
+  if (!moving.empty() && moving.size() == instances.labels.size()) {
+    for (const Instance& instance : instances.items) {
+      if (isPriorDynamic(instance, config_.dynamics)) continue;
+      const cv::Mat mask = instances.labels == instance.id;
+      const int area = cv::countNonZero(mask);
+      if (area == 0 || cv::countNonZero(mask & moving) < area / 2) continue;
+      if (allowed.empty()) allowed = cv::Mat(instances.labels.size(), CV_8U, cv::Scalar(255));
+      allowed.setTo(0, mask);
+      current_.moving_ids.push_back(instance.id);
+      ++current_.moving_instances;
+    }
+  }
   if (!allowed.empty())
     current_.masked_share = 1.0 - double(cv::countNonZero(allowed)) / double(allowed.total());
   return allowed;
@@ -70,9 +93,33 @@ void DynamicFilter::rejectMovers(Frame& frame) {
   if (!enabled_) return;
   const MoverRejection r = rejectDepthMovers(frame, config_.dynamics);
   current_.dynamic_keypoints += r.rejected;
-  current_.moving_instances = static_cast<int>(r.moving_instances.size());
-  current_.moving_ids = r.moving_instances;
+  current_.culled_points += r.culled;
+  current_.moving_instances += static_cast<int>(r.moving_instances.size());
+  current_.moving_ids.insert(current_.moving_ids.end(), r.moving_instances.begin(), r.moving_instances.end());
+  depth_voted_ = r.moving_instances;
 }
+
+namespace {
+/// The current instance that covers most of `old_mask` (0 if none covers a third of it).
+uint16_t dominantLabel(const cv::Mat& labels, const cv::Mat& old_mask) {
+  std::map<uint16_t, int> counts;
+  int total = 0;
+  for (int y = 0; y < labels.rows; y += 2) {
+    const uint16_t* l = labels.ptr<uint16_t>(y);
+    const uint8_t* m = old_mask.ptr<uint8_t>(y);
+    for (int x = 0; x < labels.cols; x += 2) {
+      if (!m[x]) continue;
+      ++total;
+      if (l[x]) ++counts[l[x]];
+    }
+  }
+  uint16_t best = 0;
+  int best_count = 0;
+  for (const auto& [id, count] : counts)
+    if (count > best_count) best = id, best_count = count;
+  return best_count * 3 >= total ? best : 0;
+}
+}  // namespace
 
 void DynamicFilter::verifyPriors(const RgbdFrame& input, const Instances& instances, const Frame& frame,
                                  bool tracked) {
@@ -82,39 +129,49 @@ void DynamicFilter::verifyPriors(const RgbdFrame& input, const Instances& instan
   std::optional<ScopedTimer> timer;
   if (timers_) timer.emplace(*timers_, "scene_flow");
   Previous& prev = *previous_;
-  const bool has_priors = current_.prior_instances > 0;
-  cv::Mat grey_small;
-  if (has_priors || !prev.instances.empty()) grey_small = greySmall(input.bgr);
-  // Scene flow needs the previous frame's prior objects, both poses and both images.
-  if (tracked && prev.tracked && !prev.instances.empty() && !prev.grey_small.empty() &&
-      prev.grey_small.size() == grey_small.size()) {
+  cv::Mat moving_mask = cv::Mat::zeros(input.bgr.size(), CV_8U);
+  const cv::Mat grey_small = instances.empty() && prev.frames.empty() ? cv::Mat() : greySmall(input.bgr);
+  // Scene flow from the oldest kept frame (scene_flow_gap_frames back) to this one: objects
+  // sampled in the old frame, followed by dense flow, lifted with both depths, ego-motion removed.
+  if (tracked && !prev.frames.empty() && prev.frames.front().tracked && !prev.frames.front().instances.empty() &&
+      prev.frames.front().grey_small.size() == grey_small.size()) {
+    const Previous::Snapshot& old = prev.frames.front();
     cv::Mat flow_small, flow;
-    prev.dis->calc(prev.grey_small, grey_small, flow_small);
+    prev.dis->calc(old.grey_small, grey_small, flow_small);
     cv::resize(flow_small, flow, input.bgr.size(), 0, 0, cv::INTER_LINEAR);
     flow *= 1.0 / kFlowScale;
-    const SE3 T_cur_prev = frame.T_camera_world * prev.T_camera_world.inverse();
+    const SE3 T_cur_old = frame.T_camera_world * old.T_camera_world.inverse();
     const PinholeCamera& camera = *frame.features.camera;
-    for (const Instance& instance : prev.instances.items) {
-      if (!isPriorDynamic(instance, config_.dynamics)) continue;
-      const auto pixels = sampleMaskPixels(prev.instances.mask(instance.id), config_.dynamics.sample_step_px);
-      std::vector<Vec3> p_prev, p_cur;
-      liftFlowCorrespondences(pixels, flow, prev.depth_m, input.depth_m, camera, p_prev, p_cur);
-      const SceneFlowVerdict verdict = sceneFlowVerdict(p_prev, p_cur, T_cur_prev, config_.dynamics);
+    for (const Instance& instance : old.instances.items) {
+      const cv::Mat old_mask = old.instances.mask(instance.id);
+      const auto pixels = sampleMaskPixels(old_mask, config_.dynamics.sample_step_px);
+      std::vector<Vec3> p_old, p_cur;
+      liftFlowCorrespondences(pixels, flow, old.depth_m, input.depth_m, camera, p_old, p_cur);
+      const SceneFlowVerdict verdict = sceneFlowVerdict(p_old, p_cur, T_cur_old, config_.dynamics);
       if (!verdict.decided) continue;
-      if (verdict.dynamic) {
-        ++current_.prior_moving;
-        current_.moving_ids.push_back(instance.id);
-      } else {
-        ++current_.prior_static;
-      }
+      const bool prior = isPriorDynamic(instance, config_.dynamics);
+      if (prior) ++(verdict.dynamic ? current_.prior_moving : current_.prior_static);
+      if (!verdict.dynamic) continue;
+      const uint16_t now = instances.labels.empty() ? 0 : dominantLabel(instances.labels, old_mask);
+      if (now == 0) continue;
+      current_.moving_ids.push_back(now);
+      if (!prior) moving_mask.setTo(255, instances.labels == now);
     }
   }
-  prev.grey_small = grey_small;
-  prev.depth_m = input.depth_m;
-  prev.T_camera_world = frame.T_camera_world;
-  prev.tracked = tracked;
-  prev.instances = Instances{};
-  if (has_priors) prev.instances = instances;
+  // Non-prior instances voted moving by the depth test stay cut out in the next frame too (not
+  // those cut out only because they moved last frame: fresh evidence each frame, no latch).
+  for (uint16_t id : depth_voted_)
+    if (const Instance* instance = instances.find(id); instance && !isPriorDynamic(*instance, config_.dynamics))
+      moving_mask.setTo(255, instances.labels == id);
+  std::sort(current_.moving_ids.begin(), current_.moving_ids.end());
+  current_.moving_ids.erase(std::unique(current_.moving_ids.begin(), current_.moving_ids.end()), current_.moving_ids.end());
+  prev.moving_mask = moving_mask;
+  if (!grey_small.empty()) {
+    prev.frames.push_back({grey_small, input.depth_m, instances, frame.T_camera_world, tracked});
+    while (int(prev.frames.size()) > std::max(1, config_.dynamics.scene_flow_gap_frames)) prev.frames.pop_front();
+  } else {
+    prev.frames.clear();
+  }
   history_.push_back(current_);
 }
 
@@ -153,6 +210,9 @@ nlohmann::json DynamicFilter::summary() const {
   out["mean_prior_moving"] = prior_moving / n;
   out["mean_prior_static"] = prior_static / n;
   out["mean_masked_share"] = masked / n;
+  int culled = 0;
+  for (const FrameDynamics& f : history_) culled += f.culled_points;
+  out["culled_points"] = culled;
   out["per_frame"] = series;
   return out;
 }

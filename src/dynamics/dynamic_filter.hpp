@@ -31,6 +31,7 @@ struct FrameDynamics {
   int moving_instances = 0;   ///< non-prior instances voted moving by depth difference
   int prior_moving = 0;       ///< prior instances whose scene flow says moving
   int prior_static = 0;       ///< prior instances whose scene flow says static
+  int culled_points = 0;      ///< map points removed because they vanished (moved away)
   double masked_share = 0.0;  ///< image share cut out of extraction
   std::vector<uint16_t> moving_ids;  ///< moving instance ids (depth vote and scene flow)
 };
@@ -64,6 +65,7 @@ class DynamicFilter {
   std::unique_ptr<Segmenter> segmenter_;
   std::string segmenter_name_ = "off";
   FrameDynamics current_;
+  std::vector<uint16_t> depth_voted_;  // this frame's instances voted moving by the depth test
   cv::Mat current_depth_m_;  // the frame segment() saw (shallow copy)
   std::vector<FrameDynamics> history_;
   std::unique_ptr<Previous> previous_;

@@ -98,6 +98,18 @@ MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
     if (std::find(out.moving_instances.begin(), out.moving_instances.end(), id) == out.moving_instances.end())
       out.moving_instances.push_back(id);
   std::sort(out.moving_instances.begin(), out.moving_instances.end());
+  // DynaSLAM's asymmetry: a keypoint nearer than its map point may just occlude it, but one
+  // measured deeper means the point is no longer there -- it lay on something that moved.
+  if (config.cull_vanished_points) {
+    for (int i = 0; i < frame.size(); ++i) {
+      const MapPointPtr& point = frame.map_points[i];
+      if (!point || point->bad || point->numObservations() < 1 || !result.keypoint_dynamic[i]) continue;
+      if (checks[i].measured_depth_m > checks[i].predicted_depth_m) {
+        point->setBad();
+        ++out.culled;
+      }
+    }
+  }
   for (int i = 0; i < frame.size(); ++i) {
     const bool in_moving = f.instance_id[i] != 0 &&
                            std::binary_search(out.moving_instances.begin(), out.moving_instances.end(), f.instance_id[i]);

@@ -34,6 +34,7 @@ void labelKeypoints(Features& features, const cv::Mat& labels);
 struct MoverRejection {
   int checked = 0;                       ///< keypoints with a map point and depth
   int rejected = 0;                      ///< keypoints made unusable
+  int culled = 0;                        ///< map points removed (measured deeper than predicted)
   std::vector<uint16_t> moving_instances;  ///< instances voted dynamic (ascending id)
 };
 
@@ -41,7 +42,8 @@ struct MoverRejection {
 /// of the matched map point in the camera, measured = sensor depth at the keypoint. Dynamic
 /// keypoints (own failure, or in an instance voted dynamic) lose their map point, outlier flag
 /// and usable flag. Instances in `known_moving` are treated as voted dynamic (a mover stays a
-/// mover for the frames where too few of its points are matched to vote).
+/// mover for the frames where too few of its points are matched to vote). Map points measured
+/// deeper than predicted are set bad when config.cull_vanished_points (needs the map lock).
 MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
                                  const std::vector<uint16_t>& known_moving = {});
 

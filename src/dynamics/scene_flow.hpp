@@ -17,7 +17,8 @@ namespace dynanav {
 struct SceneFlowVerdict {
   int points = 0;         ///< points with valid depth at both ends
   int moving = 0;         ///< of them, moving more than the threshold
-  double mean_flow_m = 0; ///< mean 3D displacement after ego-motion compensation
+  double mean_flow_m = 0; ///< mean 3D displacement length after ego-motion compensation
+  double mean_vector_m = 0; ///< length of the mean 3D displacement vector (noise cancels)
   bool decided = false;   ///< enough points for a verdict
   bool dynamic = false;
 };
