@@ -11,17 +11,21 @@ namespace {
 // T_ab_measured^-1 * (T_wa^-1 * T_wb), small-angle rotation as twice the quaternion vector part.
 struct RelativePoseError {
   RelativePoseError(const SE3& T_a_b, double weight)
-      : q_ab(Quat(T_a_b.linear()).normalized()), t_ab(T_a_b.translation()), sqrt_weight(std::sqrt(weight)) {}
+      : q_ab(Quat(T_a_b.linear()).normalized()),
+        t_ab(T_a_b.translation()),
+        sqrt_weight(std::sqrt(weight)) {}
 
   template <typename T>
-  bool operator()(const T* q_a_ptr, const T* t_a_ptr, const T* q_b_ptr, const T* t_b_ptr, T* residual) const {
+  bool operator()(const T* q_a_ptr, const T* t_a_ptr, const T* q_b_ptr, const T* t_b_ptr,
+                  T* residual) const {
     Eigen::Map<const Eigen::Quaternion<T>> q_a(q_a_ptr), q_b(q_b_ptr);
     Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_a(t_a_ptr), t_b(t_b_ptr);
     const Eigen::Quaternion<T> q_a_inv = q_a.conjugate();
     const Eigen::Quaternion<T> q_ab_est = q_a_inv * q_b;
     const Eigen::Matrix<T, 3, 1> t_ab_est = q_a_inv * (t_b - t_a);
     const Eigen::Quaternion<T> q_err = q_ab.template cast<T>().conjugate() * q_ab_est;
-    const Eigen::Matrix<T, 3, 1> t_err = q_ab.template cast<T>().conjugate() * (t_ab_est - t_ab.template cast<T>());
+    const Eigen::Matrix<T, 3, 1> t_err =
+        q_ab.template cast<T>().conjugate() * (t_ab_est - t_ab.template cast<T>());
     Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
     r.template head<3>() = t_err * T(sqrt_weight);
     r.template tail<3>() = T(2.0 * sqrt_weight) * q_err.vec();
@@ -50,7 +54,8 @@ PoseGraphSummary optimizePoseGraph(PoseGraph& graph, int max_iterations) {
     if (e.a == e.b) continue;
     auto* cost = new ceres::AutoDiffCostFunction<RelativePoseError, 6, 4, 3, 4, 3>(
         new RelativePoseError(e.T_a_b, e.weight));
-    problem.AddResidualBlock(cost, nullptr, q[e.a].data(), t[e.a].data(), q[e.b].data(), t[e.b].data());
+    problem.AddResidualBlock(cost, nullptr, q[e.a].data(), t[e.a].data(), q[e.b].data(),
+                             t[e.b].data());
   }
   for (size_t i = 0; i < n; ++i) {
     if (!problem.HasParameterBlock(q[i].data())) continue;

@@ -80,7 +80,8 @@ void applyGlobalBa(const GlobalBaSnapshot& s, const BaResult& result, Map& map) 
       // Same place in the reference camera before and after.
       p->p_world = ref->second.second.inverse() * (ref->second.first * p->p_world);
     }
-    if (!p->observations.empty()) p->updateNormalAndDepth(*p->observations.begin()->first->features.scales);
+    if (!p->observations.empty())
+      p->updateNormalAndDepth(*p->observations.begin()->first->features.scales);
   }
   for (const auto& [kf, poses] : moved) kf->setPose(poses.second);
 }

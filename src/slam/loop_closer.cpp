@@ -7,12 +7,18 @@
 
 namespace dynanav {
 
-LoopCloser::LoopCloser(Map& map, PlaceIndex& places, const LoopConfig& config, int covisibility_min_weight,
-                       bool threaded)
-    : map_(map), places_(places), config_(config), covisibility_min_weight_(covisibility_min_weight),
-      threaded_(threaded), detector_(config) {}
+LoopCloser::LoopCloser(Map& map, PlaceIndex& places, const LoopConfig& config,
+                       int covisibility_min_weight, bool threaded)
+    : map_(map),
+      places_(places),
+      config_(config),
+      covisibility_min_weight_(covisibility_min_weight),
+      threaded_(threaded),
+      detector_(config) {}
 
-LoopCloser::~LoopCloser() { finish(); }
+LoopCloser::~LoopCloser() {
+  finish();
+}
 
 void LoopCloser::finish() {
   if (global_ba_thread_.joinable()) global_ba_thread_.join();
@@ -30,8 +36,9 @@ void LoopCloser::process(const KeyFramePtr& keyframe) {
     places_.eraseCulled(map_);
     places_.computeBow(*keyframe);
     std::vector<KeyFrame*> candidates;
-    const bool due = map_.numKeyFrames() >= static_cast<size_t>(config_.loop_min_keyframes) &&
-                     (events_.empty() || keyframe->id >= last_loop_keyframe_ + config_.loop_min_keyframes);
+    const bool due =
+        map_.numKeyFrames() >= static_cast<size_t>(config_.loop_min_keyframes) &&
+        (events_.empty() || keyframe->id >= last_loop_keyframe_ + config_.loop_min_keyframes);
     if (config_.loop_closing && due && !global_ba_running_)
       candidates = detector_.detect(*keyframe, places_, map_);
     places_.add(*keyframe);
@@ -47,12 +54,15 @@ void LoopCloser::process(const KeyFramePtr& keyframe) {
     event.matches = static_cast<int>(verified->matches.size());
     event.correction_m =
         (verified->T_camera_world_corrected.inverse().translation() - keyframe->center()).norm();
-    const LoopCorrectionSummary summary = correctLoop(map_, *keyframe, *verified, config_, covisibility_min_weight_);
-    spdlog::info("loop closed: keyframe {} (frame {}) with keyframe {} (frame {}), {} matches, moved {:.3f} m; "
-                 "window {} keyframes, {} points fused, essential graph {} edges, cost {:.4g} -> {:.4g}",
-                 event.keyframe_id, event.frame_id, event.loop_keyframe_id, event.loop_frame_id, event.matches,
-                 event.correction_m, summary.window_keyframes, summary.points_fused, summary.graph_edges,
-                 summary.graph_initial_cost, summary.graph_final_cost);
+    const LoopCorrectionSummary summary =
+        correctLoop(map_, *keyframe, *verified, config_, covisibility_min_weight_);
+    spdlog::info(
+        "loop closed: keyframe {} (frame {}) with keyframe {} (frame {}), {} matches, moved {:.3f} "
+        "m; "
+        "window {} keyframes, {} points fused, essential graph {} edges, cost {:.4g} -> {:.4g}",
+        event.keyframe_id, event.frame_id, event.loop_keyframe_id, event.loop_frame_id,
+        event.matches, event.correction_m, summary.window_keyframes, summary.points_fused,
+        summary.graph_edges, summary.graph_initial_cost, summary.graph_final_cost);
     detector_.reset();
     last_loop_keyframe_ = keyframe->id;
     std::unique_lock events_lock(events_mutex_);
@@ -85,8 +95,9 @@ void LoopCloser::globalBundleAdjustment() {
     map_.removeBad();
   }
   ++global_bas_;
-  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", snapshot.problem.keyframes.size(),
-               snapshot.problem.points.size(), result.initial_rms_px, result.final_rms_px);
+  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px",
+               snapshot.problem.keyframes.size(), snapshot.problem.points.size(),
+               result.initial_rms_px, result.final_rms_px);
   global_ba_running_ = false;
 }
 

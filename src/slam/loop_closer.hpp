@@ -29,7 +29,8 @@ struct LoopEvent {
 
 class LoopCloser {
  public:
-  LoopCloser(Map& map, PlaceIndex& places, const LoopConfig& config, int covisibility_min_weight, bool threaded);
+  LoopCloser(Map& map, PlaceIndex& places, const LoopConfig& config, int covisibility_min_weight,
+             bool threaded);
   ~LoopCloser();
   LoopCloser(const LoopCloser&) = delete;
   LoopCloser& operator=(const LoopCloser&) = delete;

@@ -10,11 +10,14 @@ namespace {
 
 using EdgeKey = std::pair<uint64_t, uint64_t>;
 
-EdgeKey edgeKey(const KeyFrame* a, const KeyFrame* b) { return {std::min(a->id, b->id), std::max(a->id, b->id)}; }
+EdgeKey edgeKey(const KeyFrame* a, const KeyFrame* b) {
+  return {std::min(a->id, b->id), std::max(a->id, b->id)};
+}
 
 }  // namespace
 
-EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed, const KeyFramePoses& uncorrected,
+EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed,
+                                            const KeyFramePoses& uncorrected,
                                             const LoopLinks& loop_links, const LoopConfig& config) {
   PoseGraph graph;
   std::map<const KeyFrame*, int> node;
@@ -32,15 +35,18 @@ EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed, con
   std::set<EdgeKey> added;
   auto add = [&](KeyFrame* a, KeyFrame* b, const SE3& T_world_a, const SE3& T_world_b) {
     const auto ia = node.find(a), ib = node.find(b);
-    if (ia == node.end() || ib == node.end() || a == b || !added.insert(edgeKey(a, b)).second) return;
+    if (ia == node.end() || ib == node.end() || a == b || !added.insert(edgeKey(a, b)).second)
+      return;
     graph.edges.push_back({ia->second, ib->second, T_world_a.inverse() * T_world_b, 1.0});
   };
   // New loop links first: they carry the correction (measured after it).
   for (const auto& [kf, links] : loop_links) {
     for (KeyFrame* other : links) {
       const auto w = kf->connections.find(other);
-      const bool strong = w != kf->connections.end() && w->second >= config.essential_graph_min_weight;
-      if (strong || (kf->loop_edges.count(other) > 0)) add(kf, other, kf->T_world_camera(), other->T_world_camera());
+      const bool strong =
+          w != kf->connections.end() && w->second >= config.essential_graph_min_weight;
+      if (strong || (kf->loop_edges.count(other) > 0))
+        add(kf, other, kf->T_world_camera(), other->T_world_camera());
     }
   }
   for (KeyFrame* kf : keyframes) {
@@ -56,7 +62,8 @@ EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed, con
   std::map<const KeyFrame*, SE3> before;  // T_camera_world before the optimisation
   for (KeyFrame* kf : keyframes) before[kf] = kf->T_camera_world();
   const PoseGraphSummary summary = optimizePoseGraph(graph, config.essential_graph_iterations);
-  for (size_t k = 0; k < keyframes.size(); ++k) keyframes[k]->setPose(graph.nodes[k].T_world_camera.inverse());
+  for (size_t k = 0; k < keyframes.size(); ++k)
+    keyframes[k]->setPose(graph.nodes[k].T_world_camera.inverse());
   // Points keep their place relative to their first observer.
   for (const auto& [id, p] : map.points()) {
     if (p->bad || p->observations.empty()) continue;
@@ -69,8 +76,8 @@ EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed, con
   return {static_cast<int>(graph.edges.size()), summary.initial_cost, summary.final_cost};
 }
 
-LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoop& loop, const LoopConfig& config,
-                                  int covisibility_min_weight) {
+LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoop& loop,
+                                  const LoopConfig& config, int covisibility_min_weight) {
   LoopCorrectionSummary summary;
   current.updateConnections(covisibility_min_weight);
   std::vector<KeyFrame*> window{&current};
@@ -117,7 +124,8 @@ LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoo
     if (r && !r->bad) loop_points.push_back(r);
   }
   std::map<KeyFrame*, std::set<KeyFrame*>> previous;
-  for (KeyFrame* kf : window) previous[kf] = {kf->ordered_covisible.begin(), kf->ordered_covisible.end()};
+  for (KeyFrame* kf : window)
+    previous[kf] = {kf->ordered_covisible.begin(), kf->ordered_covisible.end()};
   for (KeyFrame* kf : window) summary.points_fused += matcher::fuse(*kf, loop_points, 4.0f);
   // 3. New links across the loop, then the essential graph.
   std::set<KeyFrame*> in_window(window.begin(), window.end());
@@ -132,7 +140,8 @@ LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoo
   current.loop_edges.insert(loop.loop);
   loop.loop->loop_edges.insert(&current);
   links[&current].insert(loop.loop);
-  const EssentialGraphResult graph = optimizeEssentialGraph(map, *loop.loop, uncorrected, links, config);
+  const EssentialGraphResult graph =
+      optimizeEssentialGraph(map, *loop.loop, uncorrected, links, config);
   summary.graph_edges = graph.edges;
   summary.graph_initial_cost = graph.initial_cost;
   summary.graph_final_cost = graph.final_cost;

@@ -22,8 +22,8 @@ struct LoopCorrectionSummary {
   double graph_final_cost = 0.0;
 };
 
-LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoop& loop, const LoopConfig& config,
-                                  int covisibility_min_weight);
+LoopCorrectionSummary correctLoop(Map& map, KeyFrame& current, const VerifiedLoop& loop,
+                                  const LoopConfig& config, int covisibility_min_weight);
 
 using KeyFramePoses = std::map<KeyFrame*, SE3>;  ///< keyed by address; T_world_camera
 using LoopLinks = std::map<KeyFrame*, std::set<KeyFrame*>>;
@@ -38,7 +38,8 @@ struct EssentialGraphResult {
 /// relative poses before the correction (`uncorrected`, for keyframes the correction moved; the
 /// current pose for the others); `loop_links` (new links across the loop) measure the corrected
 /// poses. Points move with their first observer. Exposed for tests.
-EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed, const KeyFramePoses& uncorrected,
+EssentialGraphResult optimizeEssentialGraph(Map& map, const KeyFrame& fixed,
+                                            const KeyFramePoses& uncorrected,
                                             const LoopLinks& loop_links, const LoopConfig& config);
 
 }  // namespace dynanav

@@ -6,7 +6,8 @@
 
 namespace dynanav {
 
-std::vector<KeyFrame*> LoopDetector::detect(KeyFrame& keyframe, const PlaceIndex& places, const Map& map) {
+std::vector<KeyFrame*> LoopDetector::detect(KeyFrame& keyframe, const PlaceIndex& places,
+                                            const Map& map) {
   // The lowest similarity to a covisible neighbour: a loop keyframe must look at least as much
   // like this one as the keyframes that share its view do.
   double min_score = 1.0;
@@ -42,8 +43,9 @@ std::vector<KeyFrame*> LoopDetector::detect(KeyFrame& keyframe, const PlaceIndex
     for (KeyFrame* n : candidate->ordered_covisible) group.keyframes.insert(n->id);
     bool enough = false, extended_any = false;
     for (size_t g = 0; g < groups_.size(); ++g) {
-      const bool shares = std::any_of(group.keyframes.begin(), group.keyframes.end(),
-                                      [&](KeyframeId id) { return groups_[g].keyframes.count(id) > 0; });
+      const bool shares =
+          std::any_of(group.keyframes.begin(), group.keyframes.end(),
+                      [&](KeyframeId id) { return groups_[g].keyframes.count(id) > 0; });
       if (!shares) continue;
       extended_any = true;
       const int consistency = groups_[g].consistency + 1;
@@ -59,8 +61,8 @@ std::vector<KeyFrame*> LoopDetector::detect(KeyFrame& keyframe, const PlaceIndex
     if (!extended_any) current.push_back({group.keyframes, 0});
   }
   groups_ = std::move(current);
-  spdlog::debug("loop detection kf {}: {} candidates (min score {:.4f}), {} consistent", keyframe.id,
-                candidates.size(), min_score, accepted.size());
+  spdlog::debug("loop detection kf {}: {} candidates (min score {:.4f}), {} consistent",
+                keyframe.id, candidates.size(), min_score, accepted.size());
   return accepted;
 }
 

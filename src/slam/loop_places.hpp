@@ -31,7 +31,8 @@ class PlaceIndex {
   [[nodiscard]] const KeyframeDatabase& database() const { return database_; }
   [[nodiscard]] size_t size() const { return database_.size(); }
   /// Covisibility callback for database queries: the best 10 covisible keyframes (map locked).
-  [[nodiscard]] static std::function<std::vector<KeyframeId>(KeyframeId)> covisibleOf(const Map& map);
+  [[nodiscard]] static std::function<std::vector<KeyframeId>(KeyframeId)> covisibleOf(
+      const Map& map);
 
  private:
   std::shared_ptr<const Vocabulary> vocabulary_;

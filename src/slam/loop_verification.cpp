@@ -12,7 +12,9 @@
 namespace dynanav {
 namespace {
 
-bool good(const MapPointPtr& p) { return p && !p->bad; }
+bool good(const MapPointPtr& p) {
+  return p && !p->bad;
+}
 
 std::vector<MapPointPtr> pointsAround(const KeyFrame& loop) {
   std::vector<MapPointPtr> out;
@@ -43,8 +45,8 @@ int refinePose(const KeyFrame& current, SE3& T_camera_world, std::vector<LoopMat
     observations.push_back(obs);
   }
   std::vector<uint8_t> outlier;
-  const int inliers = optimizePose(observations, {cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()}, {}, T_camera_world,
-                                   outlier);
+  const int inliers = optimizePose(observations, {cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()}, {},
+                                   T_camera_world, outlier);
   std::vector<LoopMatch> kept;
   for (size_t k = 0; k < matches.size(); ++k)
     if (!outlier[k]) kept.push_back(matches[k]);
@@ -54,8 +56,9 @@ int refinePose(const KeyFrame& current, SE3& T_camera_world, std::vector<LoopMat
 
 }  // namespace
 
-int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world, const std::vector<MapPointPtr>& points,
-                      float radius_px, std::vector<uint8_t>& taken, std::vector<LoopMatch>& matches) {
+int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world,
+                      const std::vector<MapPointPtr>& points, float radius_px,
+                      std::vector<uint8_t>& taken, std::vector<LoopMatch>& matches) {
   const Features& f = keyframe.features;
   const PinholeCamera& cam = *f.camera;
   const PyramidScales& scales = *f.scales;
@@ -74,7 +77,8 @@ int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world, const
     const int level = point->predictLevel(dist, scales);
     const float radius = radius_px * scales.scale[level];
     int best = 256, best_index = -1;
-    for (const int j : f.featuresInArea(uv.x(), uv.y(), radius, std::max(0, level - 1), level + 1)) {
+    for (const int j :
+         f.featuresInArea(uv.x(), uv.y(), radius, std::max(0, level - 1), level + 1)) {
       if (taken[j] || !f.usable[j]) continue;
       const int d = descriptorRowDistance(point->descriptor, 0, f.descriptors, j);
       if (d < best) {
@@ -90,18 +94,21 @@ int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world, const
   return added;
 }
 
-std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current, const std::vector<KeyFrame*>& candidates,
+std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current,
+                                       const std::vector<KeyFrame*>& candidates,
                                        const LoopConfig& config) {
   const Features& f = current.features;
   for (KeyFrame* candidate : candidates) {
     if (candidate->bad || candidate->bow_features.empty()) continue;
     const Features& g = candidate->features;
-    auto bow_matches = matchByDirectIndex(current.bow_features, f.descriptors, f.keypoints, candidate->bow_features,
-                                          g.descriptors, g.keypoints, {},
-                                          [&](int i) { return good(current.map_points[i]) && f.usable[i]; });
-    std::erase_if(bow_matches, [&](const cv::DMatch& m) { return !good(candidate->map_points[m.trainIdx]); });
+    auto bow_matches = matchByDirectIndex(
+        current.bow_features, f.descriptors, f.keypoints, candidate->bow_features, g.descriptors,
+        g.keypoints, {}, [&](int i) { return good(current.map_points[i]) && f.usable[i]; });
+    std::erase_if(bow_matches,
+                  [&](const cv::DMatch& m) { return !good(candidate->map_points[m.trainIdx]); });
     if (static_cast<int>(bow_matches.size()) < config.loop_min_bow_matches) {
-      spdlog::debug("loop kf {} vs {}: {} bow matches, too few", current.id, candidate->id, bow_matches.size());
+      spdlog::debug("loop kf {} vs {}: {} bow matches, too few", current.id, candidate->id,
+                    bow_matches.size());
       continue;
     }
     // 3D-3D pairs, each in its own camera: RANSAC finds T_candidate_current.
@@ -116,8 +123,8 @@ std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current, const std::vecto
     ransac.min_inliers = config.loop_min_ransac_inliers;
     ransac.seed = current.id + 1;
     const RigidRansacResult rigid = estimateRigidRansac(a, b, ransac, b_depth);
-    spdlog::debug("loop kf {} vs {}: {} bow matches, ransac {} ({} inliers)", current.id, candidate->id,
-                  bow_matches.size(), rigid.ok ? "ok" : "failed", rigid.inliers);
+    spdlog::debug("loop kf {} vs {}: {} bow matches, ransac {} ({} inliers)", current.id,
+                  candidate->id, bow_matches.size(), rigid.ok ? "ok" : "failed", rigid.inliers);
     if (!rigid.ok) continue;
     VerifiedLoop loop;
     loop.loop = candidate;
@@ -127,15 +134,17 @@ std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current, const std::vecto
     for (size_t k = 0; k < bow_matches.size(); ++k) {
       if (!rigid.inlier[k]) continue;
       taken[bow_matches[k].queryIdx] = 1;
-      loop.matches.push_back({bow_matches[k].queryIdx, candidate->map_points[bow_matches[k].trainIdx]});
+      loop.matches.push_back(
+          {bow_matches[k].queryIdx, candidate->map_points[bow_matches[k].trainIdx]});
     }
     // More matches around the projections of everything the loop side sees, then a pose
     // optimisation over all of them: the loop is accepted only with wide geometric support.
     loop.loop_points = pointsAround(*candidate);
-    matchByProjection(current, loop.T_camera_world_corrected, loop.loop_points, 10.0f, taken, loop.matches);
+    matchByProjection(current, loop.T_camera_world_corrected, loop.loop_points, 10.0f, taken,
+                      loop.matches);
     const int inliers = refinePose(current, loop.T_camera_world_corrected, loop.matches);
-    spdlog::debug("loop kf {} vs {}: {} matches after projection, {} inliers", current.id, candidate->id,
-                  loop.matches.size(), inliers);
+    spdlog::debug("loop kf {} vs {}: {} matches after projection, {} inliers", current.id,
+                  candidate->id, loop.matches.size(), inliers);
     if (inliers < config.loop_min_matches) continue;
     return loop;
   }

@@ -15,26 +15,28 @@
 namespace dynanav {
 
 struct LoopMatch {
-  int keypoint = 0;    ///< keypoint in the current keyframe
-  MapPointPtr point;   ///< the loop side's map point it sees
+  int keypoint = 0;   ///< keypoint in the current keyframe
+  MapPointPtr point;  ///< the loop side's map point it sees
 };
 
 struct VerifiedLoop {
   KeyFrame* loop = nullptr;
   SE3 T_camera_world_corrected = SE3::Identity();  ///< current keyframe's pose in the loop's frame
-  std::vector<LoopMatch> matches;                   ///< current keypoints to loop points (inliers)
-  std::vector<MapPointPtr> loop_points;             ///< points of the loop keyframe and neighbours
+  std::vector<LoopMatch> matches;                  ///< current keypoints to loop points (inliers)
+  std::vector<MapPointPtr> loop_points;            ///< points of the loop keyframe and neighbours
   int ransac_inliers = 0;
 };
 
 /// Tries the candidates in order; the first that passes every test is returned.
-std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current, const std::vector<KeyFrame*>& candidates,
+std::optional<VerifiedLoop> verifyLoop(const KeyFrame& current,
+                                       const std::vector<KeyFrame*>& candidates,
                                        const LoopConfig& config);
 
 /// Matches `points` projected into `keyframe` at pose T_camera_world (not the keyframe's own) to
 /// its keypoints, skipping keypoints listed in `taken` (ORB-SLAM2 SearchByProjection with a
 /// corrected pose). Appends to `matches`; returns how many were added.
-int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world, const std::vector<MapPointPtr>& points,
-                      float radius_px, std::vector<uint8_t>& taken, std::vector<LoopMatch>& matches);
+int matchByProjection(const KeyFrame& keyframe, const SE3& T_camera_world,
+                      const std::vector<MapPointPtr>& points, float radius_px,
+                      std::vector<uint8_t>& taken, std::vector<LoopMatch>& matches);
 
 }  // namespace dynanav

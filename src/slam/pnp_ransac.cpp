@@ -5,7 +5,8 @@
 
 namespace dynanav {
 
-PnpRansacResult solvePnpRansac(const std::vector<Vec3>& p_world, const std::vector<Eigen::Vector2d>& pixels,
+PnpRansacResult solvePnpRansac(const std::vector<Vec3>& p_world,
+                               const std::vector<Eigen::Vector2d>& pixels,
                                const PinholeCamera& camera, const PnpRansacOptions& options) {
   PnpRansacResult result;
   result.inlier.assign(p_world.size(), 0);
@@ -22,9 +23,9 @@ PnpRansacResult solvePnpRansac(const std::vector<Vec3>& p_world, const std::vect
   cv::theRNG().state = options.seed;
   cv::Mat rvec, tvec;
   std::vector<int> inliers;
-  const bool ok = cv::solvePnPRansac(object, image, camera.K(), cv::noArray(), rvec, tvec, false,
-                                     options.iterations, static_cast<float>(options.reprojection_px), 0.99,
-                                     inliers, cv::SOLVEPNP_EPNP);
+  const bool ok = cv::solvePnPRansac(
+      object, image, camera.K(), cv::noArray(), rvec, tvec, false, options.iterations,
+      static_cast<float>(options.reprojection_px), 0.99, inliers, cv::SOLVEPNP_EPNP);
   if (!ok || static_cast<int>(inliers.size()) < options.min_inliers) return result;
   cv::Mat R_cv;
   cv::Rodrigues(rvec, R_cv);

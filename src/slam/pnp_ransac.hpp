@@ -14,7 +14,7 @@ struct PnpRansacOptions {
   int iterations = 300;
   double reprojection_px = 5.991;  ///< inlier threshold (ORB-SLAM2 uses chi2(2) at level 0)
   int min_inliers = 10;
-  uint64_t seed = 1;               ///< OpenCV's RNG is seeded with it: same input, same answer
+  uint64_t seed = 1;  ///< OpenCV's RNG is seeded with it: same input, same answer
 };
 
 struct PnpRansacResult {
@@ -25,7 +25,8 @@ struct PnpRansacResult {
 };
 
 /// `pixels` are undistorted; the camera's distortion is ignored.
-PnpRansacResult solvePnpRansac(const std::vector<Vec3>& p_world, const std::vector<Eigen::Vector2d>& pixels,
+PnpRansacResult solvePnpRansac(const std::vector<Vec3>& p_world,
+                               const std::vector<Eigen::Vector2d>& pixels,
                                const PinholeCamera& camera, const PnpRansacOptions& options = {});
 
 }  // namespace dynanav

@@ -37,7 +37,8 @@ int searchCandidatePoints(Frame& frame, const KeyFrame& candidate, float radius_
 
 }  // namespace
 
-int Relocaliser::tryKeyFrame(Frame& frame, const FeatureVector& frame_features, const KeyFrame& candidate) const {
+int Relocaliser::tryKeyFrame(Frame& frame, const FeatureVector& frame_features,
+                             const KeyFrame& candidate) const {
   const Features& kf = candidate.features;
   const Features& f = frame.features;
   BowMatchOptions options;
@@ -46,8 +47,8 @@ int Relocaliser::tryKeyFrame(Frame& frame, const FeatureVector& frame_features, 
     const MapPointPtr& p = candidate.map_points[i];
     return p && !p->bad && kf.usable[i];
   };
-  auto matches = matchByDirectIndex(candidate.bow_features, kf.descriptors, kf.keypoints, frame_features,
-                                    f.descriptors, f.keypoints, options, usable);
+  auto matches = matchByDirectIndex(candidate.bow_features, kf.descriptors, kf.keypoints,
+                                    frame_features, f.descriptors, f.keypoints, options, usable);
   std::erase_if(matches, [&](const cv::DMatch& m) { return !f.usable[m.trainIdx]; });
   if (static_cast<int>(matches.size()) < loop_.reloc_min_bow_matches) return 0;
   std::vector<Vec3> p_world;
@@ -63,7 +64,8 @@ int Relocaliser::tryKeyFrame(Frame& frame, const FeatureVector& frame_features, 
   frame.clearMatches();
   frame.T_camera_world = solved.T_camera_world;
   for (size_t k = 0; k < matches.size(); ++k) {
-    if (solved.inlier[k]) frame.map_points[matches[k].trainIdx] = candidate.map_points[matches[k].queryIdx];
+    if (solved.inlier[k])
+      frame.map_points[matches[k].trainIdx] = candidate.map_points[matches[k].queryIdx];
   }
   optimizeFramePose(frame, tracking_);
   int good = discardOutliers(frame);
@@ -97,8 +99,8 @@ RelocalisationResult Relocaliser::relocalise(Frame& frame, const Map& map) const
     if (!kf || kf->bow.empty()) continue;
     ++result.candidates;
     const int inliers = tryKeyFrame(frame, features, *kf);
-    spdlog::debug("relocalisation frame {}: keyframe {} (score {:.3f}) -> {} inliers", frame.id, kf->id, c.score,
-                  inliers);
+    spdlog::debug("relocalisation frame {}: keyframe {} (score {:.3f}) -> {} inliers", frame.id,
+                  kf->id, c.score, inliers);
     if (inliers >= loop_.reloc_min_inliers) {
       result.ok = true;
       result.keyframe_id = kf->id;

@@ -29,7 +29,8 @@ class Relocaliser {
 
   /// One candidate: direct-index matching, EPnP-RANSAC, pose optimisation, projection search.
   /// Exposed for tests. Returns the inlier count (0 on failure); the frame keeps its matches.
-  int tryKeyFrame(Frame& frame, const FeatureVector& frame_features, const KeyFrame& candidate) const;
+  int tryKeyFrame(Frame& frame, const FeatureVector& frame_features,
+                  const KeyFrame& candidate) const;
 
  private:
   const PlaceIndex& places_;

@@ -17,7 +17,8 @@ SE3 fitRigid(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 }
 
 RigidRansacResult estimateRigidRansac(const std::vector<Vec3>& a, const std::vector<Vec3>& b,
-                                      const RigidRansacOptions& options, const std::vector<double>& b_depth_m) {
+                                      const RigidRansacOptions& options,
+                                      const std::vector<double>& b_depth_m) {
   RigidRansacResult result;
   const size_t n = a.size();
   result.inlier.assign(n, 0);

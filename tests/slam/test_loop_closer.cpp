@@ -19,12 +19,14 @@ struct DriftingLoop {
 
   DriftingLoop(int last_degrees, double drift_rad, double drift_m) {
     std::vector<SE3> estimated;
-    const SE3 drift = makeSE3(Quat(Eigen::AngleAxisd(drift_rad, Vec3::UnitY())), Vec3(drift_m, 0.0, 0.5 * drift_m));
+    const SE3 drift = makeSE3(Quat(Eigen::AngleAxisd(drift_rad, Vec3::UnitY())),
+                              Vec3(drift_m, 0.0, 0.5 * drift_m));
     SE3 T_wc = SE3::Identity();
     for (int a = 0; a <= last_degrees; a += 10) {
       truth.push_back(test::orbitPose(a * M_PI / 180.0, 1.0));
       if (truth.size() > 1) {
-        const SE3 step = truth[truth.size() - 2] * truth.back().inverse();  // T_wc(prev)^-1 T_wc(this)
+        const SE3 step =
+            truth[truth.size() - 2] * truth.back().inverse();  // T_wc(prev)^-1 T_wc(this)
         T_wc = T_wc * step * drift;
       }
       estimated.push_back(T_wc.inverse());

@@ -17,11 +17,13 @@ LoopScene makeLoopScene(int count, double radius_m, double orbit_m, uint64_t see
   for (int i = 0; i < count; ++i) {
     const double a = angle(rng);
     s.points.emplace_back(radius_m * std::sin(a), height(rng), radius_m * std::cos(a) - orbit_m);
-    for (int b = 0; b < 32; ++b) s.descriptors.at<uint8_t>(i, b) = static_cast<uint8_t>(rng() & 0xFF);
+    for (int b = 0; b < 32; ++b)
+      s.descriptors.at<uint8_t>(i, b) = static_cast<uint8_t>(rng() & 0xFF);
   }
   // Vocabulary trained on the points' descriptors, grouped into 40 "images" of 100.
   std::vector<cv::Mat> groups;
-  for (int i = 0; i + 100 <= count; i += 100) groups.push_back(s.descriptors.rowRange(i, i + 100).clone());
+  for (int i = 0; i + 100 <= count; i += 100)
+    groups.push_back(s.descriptors.rowRange(i, i + 100).clone());
   VocabularyTrainOptions options;
   options.branching = 8;
   options.levels = 3;
@@ -58,7 +60,8 @@ View renderView(const LoopScene& scene, const SE3& T_camera_world, int flip_bits
     if (depth.at<float>(v, u) > 0.f) continue;  // one point per pixel
     // Keypoints sit on whole pixels, so the depth read there is the point's exact depth.
     depth.at<float>(v, u) = static_cast<float>(p_c.z());
-    keypoints.emplace_back(cv::Point2f(static_cast<float>(u), static_cast<float>(v)), 31.f, 0.f, 1.f, 0);
+    keypoints.emplace_back(cv::Point2f(static_cast<float>(u), static_cast<float>(v)), 31.f, 0.f,
+                           1.f, 0);
     cv::Mat d = scene.descriptors.row(static_cast<int>(i)).clone();
     const int flips = flip_bits > 0 ? static_cast<int>(rng() % (flip_bits + 1)) : 0;
     for (int k = 0; k < flips; ++k) {
@@ -70,7 +73,8 @@ View renderView(const LoopScene& scene, const SE3& T_camera_world, int flip_bits
   }
   // Small depth error is not modelled: the pixel centre differs from the projection by < 0.5 px.
   View view;
-  view.features = makeFeatures(std::move(keypoints), descriptors, depth, 8.0, scene.camera, scene.scales);
+  view.features =
+      makeFeatures(std::move(keypoints), descriptors, depth, 8.0, scene.camera, scene.scales);
   view.point_of = std::move(point_of);
   return view;
 }
@@ -83,8 +87,8 @@ std::vector<KeyFramePtr> buildMap(const LoopScene& scene, const std::vector<SE3>
   for (size_t k = 0; k < T_cw_true.size(); ++k) {
     View view = renderView(scene, T_cw_true[k], flip_bits, 1000 + k);
     const int n = view.features.size();
-    auto kf = std::make_shared<KeyFrame>(k, k, static_cast<double>(k), std::move(view.features), T_cw_estimated[k],
-                                         std::vector<MapPointPtr>(n));
+    auto kf = std::make_shared<KeyFrame>(k, k, static_cast<double>(k), std::move(view.features),
+                                         T_cw_estimated[k], std::vector<MapPointPtr>(n));
     map.addKeyFrame(kf);
     const SE3 T_wc = kf->T_world_camera();
     for (int i = 0; i < n; ++i) {

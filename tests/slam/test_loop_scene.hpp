@@ -46,6 +46,7 @@ View renderView(const LoopScene& scene, const SE3& T_camera_world, int flip_bits
 /// (tracking continuity), else creates a new point from its estimated pose and its depth: so a
 /// revisit after a long way round duplicates points, as a drifting SLAM map does.
 std::vector<KeyFramePtr> buildMap(const LoopScene& scene, const std::vector<SE3>& T_cw_true,
-                                  const std::vector<SE3>& T_cw_estimated, Map& map, int flip_bits = 6);
+                                  const std::vector<SE3>& T_cw_estimated, Map& map,
+                                  int flip_bits = 6);
 
 }  // namespace dynanav::test

@@ -11,12 +11,17 @@
 namespace dynanav {
 namespace {
 
-double translationError(const SE3& a, const SE3& b) { return (a.translation() - b.translation()).norm(); }
-double rotationError(const SE3& a, const SE3& b) { return rotationAngle(a.linear() * b.linear().transpose()); }
+double translationError(const SE3& a, const SE3& b) {
+  return (a.translation() - b.translation()).norm();
+}
+double rotationError(const SE3& a, const SE3& b) {
+  return rotationAngle(a.linear() * b.linear().transpose());
+}
 
 TEST(PnpRansac, RecoversKnownPoseWithThirtyPercentOutliers) {
   const PinholeCamera camera;
-  const SE3 T_cw = makeSE3(Quat(Eigen::AngleAxisd(0.4, Vec3(0.3, 1.0, 0.1).normalized())), Vec3(0.3, -0.1, 0.5));
+  const SE3 T_cw =
+      makeSE3(Quat(Eigen::AngleAxisd(0.4, Vec3(0.3, 1.0, 0.1).normalized())), Vec3(0.3, -0.1, 0.5));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::normal_distribution<double> noise(0.0, 0.5);
@@ -64,7 +69,8 @@ TEST(PnpRansac, RefusesTooFewOrRandomMatches) {
 }
 
 TEST(RigidRansac, RecoversKnownTransformWithOutliers) {
-  const SE3 T_b_a = makeSE3(Quat(Eigen::AngleAxisd(-0.7, Vec3(0.1, 1.0, 0.2).normalized())), Vec3(1.0, 0.2, -0.4));
+  const SE3 T_b_a = makeSE3(Quat(Eigen::AngleAxisd(-0.7, Vec3(0.1, 1.0, 0.2).normalized())),
+                            Vec3(1.0, 0.2, -0.4));
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::normal_distribution<double> noise(0.0, 0.01);
@@ -124,7 +130,8 @@ TEST(EssentialGraph, DistributesALoopError) {
     graph.nodes.push_back({static_cast<uint64_t>(i), estimate, i == 0});
   }
   for (int i = 1; i < n; ++i) {
-    graph.edges.push_back({i - 1, i, graph.nodes[i - 1].T_world_camera.inverse() * graph.nodes[i].T_world_camera});
+    graph.edges.push_back(
+        {i - 1, i, graph.nodes[i - 1].T_world_camera.inverse() * graph.nodes[i].T_world_camera});
   }
   graph.edges.push_back({n - 1, 0, truth[n - 1].inverse() * truth[0]});  // the loop, exact
   const double before = translationError(graph.nodes[n - 1].T_world_camera, truth[n - 1]);
@@ -135,7 +142,8 @@ TEST(EssentialGraph, DistributesALoopError) {
   EXPECT_LT(summary.final_cost, summary.initial_cost);
   EXPECT_TRUE(graph.nodes[0].T_world_camera.isApprox(truth[0])) << "the fixed node stays";
   double worst = 0.0;
-  for (int i = 0; i < n; ++i) worst = std::max(worst, translationError(graph.nodes[i].T_world_camera, truth[i]));
+  for (int i = 0; i < n; ++i)
+    worst = std::max(worst, translationError(graph.nodes[i].T_world_camera, truth[i]));
   EXPECT_LT(worst, before / 2.0) << "no pose is left with the whole error";
 }
 

@@ -27,7 +27,8 @@ bool vocabularyBuilt() {
 
 double ateRmse(const fs::path& gt, const fs::path& est) {
   std::string out;
-  const int code = test::runCli("eval --gt " + gt.string() + " --est " + est.string() + " --json", &out);
+  const int code =
+      test::runCli("eval --gt " + gt.string() + " --est " + est.string() + " --json", &out);
   EXPECT_EQ(code, 0) << out;
   const auto begin = out.find('{');
   if (code != 0 || begin == std::string::npos) return 1e9;
@@ -36,10 +37,14 @@ double ateRmse(const fs::path& gt, const fs::path& est) {
 
 TEST(BlackoutDrill, RelocalisesWithinFiveFramesAndKeepsAccuracy) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
-  if (!vocabularyBuilt()) GTEST_SKIP() << "no vocabulary built (target dynanav_vocabulary): skipped";
+  if (!vocabularyBuilt())
+    GTEST_SKIP() << "no vocabulary built (target dynanav_vocabulary): skipped";
   const fs::path out = test::scratchDir("blackout_reloc");
   std::string log;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --blackout 100:115 --quiet", &log), 0)
+  ASSERT_EQ(
+      test::runCli("run " + seq.string() + " --out " + out.string() + " --blackout 100:115 --quiet",
+                   &log),
+      0)
       << log;
   const auto stats = readJsonFile(out / "stats.json");
   EXPECT_EQ(stats["frames"], 244);
@@ -56,12 +61,15 @@ TEST(BlackoutDrill, RelocalisesWithinFiveFramesAndKeepsAccuracy) {
 
 TEST(LoopClosing, NoFalseLoopOnBonnCrowd) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_bonn_crowd");
-  if (!vocabularyBuilt()) GTEST_SKIP() << "no vocabulary built (target dynanav_vocabulary): skipped";
+  if (!vocabularyBuilt())
+    GTEST_SKIP() << "no vocabulary built (target dynanav_vocabulary): skipped";
   const fs::path out = test::scratchDir("bonn_no_loop");
   std::string log;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --quiet", &log), 0) << log;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --quiet", &log), 0)
+      << log;
   const auto stats = readJsonFile(out / "stats.json");
-  std::printf("bonn_crowd: %d loops, %d keyframes\n", stats["loops"].get<int>(), stats["keyframes"].get<int>());
+  std::printf("bonn_crowd: %d loops, %d keyframes\n", stats["loops"].get<int>(),
+              stats["keyframes"].get<int>());
   EXPECT_EQ(stats["loops"], 0) << stats["loop_details"].dump();
 }
 

@@ -36,12 +36,15 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
   }
   const fs::path seq = test::scratchDir("loop_sim_seq");
   std::string log;
-  ASSERT_EQ(test::runCli("simulate --scenario loop --fps 10 --out " + seq.string(), &log), 0) << log;
+  ASSERT_EQ(test::runCli("simulate --scenario loop --fps 10 --out " + seq.string(), &log), 0)
+      << log;
   const fs::path config = test::scratchDir("loop_sim_cfg") / "loop_off.yaml";
   std::ofstream(config) << "loop:\n  loop_closing: false\n";
   const fs::path on = test::scratchDir("loop_sim_on"), off = test::scratchDir("loop_sim_off");
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + on.string() + " --quiet", &log), 0) << log;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + off.string() + " --config " + config.string() + " --quiet",
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + on.string() + " --quiet", &log), 0)
+      << log;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + off.string() + " --config " +
+                             config.string() + " --quiet",
                          &log),
             0)
       << log;
@@ -51,23 +54,28 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
   ASSERT_GE(stats_on["loops"].get<int>(), 1) << "the loop is detected";
   // The loop closes when the wearer is back near the start (the last ~15 % of the walk).
   const int frames = stats_on["frames"].get<int>();
-  EXPECT_GT(stats_on["loop_frames"][0].get<int>(), frames * 3 / 4) << stats_on["loop_details"].dump();
+  EXPECT_GT(stats_on["loop_frames"][0].get<int>(), frames * 3 / 4)
+      << stats_on["loop_details"].dump();
   EXPECT_LT(stats_on["loop_details"][0]["loop_frame"].get<int>(), frames / 4);
   const double drift_on = endDrift(seq / "groundtruth.txt", on / "trajectory.txt");
   const double drift_off = endDrift(seq / "groundtruth.txt", off / "trajectory.txt");
-  std::printf("loop sim: end drift %.4f m without loop closing, %.4f m with (%.1fx)\n", drift_off, drift_on,
-              drift_off / drift_on);
+  std::printf("loop sim: end drift %.4f m without loop closing, %.4f m with (%.1fx)\n", drift_off,
+              drift_on, drift_off / drift_on);
   EXPECT_LE(drift_on * 5.0, drift_off);
 }
 
 TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarning) {
   const fs::path seq = test::scratchDir("loop_novoc_seq");
   std::string log;
-  ASSERT_EQ(test::runCli("simulate --scenario static-room --frames 12 --fps 10 --out " + seq.string(), &log), 0) << log;
+  ASSERT_EQ(test::runCli(
+                "simulate --scenario static-room --frames 12 --fps 10 --out " + seq.string(), &log),
+            0)
+      << log;
   const fs::path config = test::scratchDir("loop_novoc_cfg") / "novoc.yaml";
   std::ofstream(config) << "loop:\n  vocabulary: " << (seq / "missing.dnvoc").string() << "\n";
   const fs::path out = test::scratchDir("loop_novoc_out");
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --config " + config.string() + " --quiet",
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --config " +
+                             config.string() + " --quiet",
                          &log),
             0)
       << log;
