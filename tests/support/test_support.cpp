@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -55,6 +56,15 @@ int runCli(const std::string& args, std::string* output) {
   const int status = pclose(pipe);
   if (output) *output = text;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+double ateRmse(const fs::path& gt, const fs::path& est) {
+  std::string out;
+  const int code = runCli("eval --gt " + gt.string() + " --est " + est.string() + " --json", &out);
+  EXPECT_EQ(code, 0) << out;
+  const auto begin = out.find('{');
+  if (code != 0 || begin == std::string::npos) return 1e9;
+  return nlohmann::json::parse(out.substr(begin))["ate_m"]["rmse"].get<double>();
 }
 
 std::string readFile(const fs::path& path) {

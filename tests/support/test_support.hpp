@@ -15,6 +15,9 @@ std::filesystem::path sharedModels();
 std::filesystem::path scratchDir(const std::string& tag);
 /// Runs `<build>/bin/dynanav ARGS`, capturing stdout+stderr into `output`; returns the exit code.
 int runCli(const std::string& args, std::string* output = nullptr);
+/// ATE RMSE (m) of `est` against `gt` as the project's own `dynanav eval --json` computes it;
+/// a failed evaluation is reported as a test failure and returns 1e9.
+double ateRmse(const std::filesystem::path& gt, const std::filesystem::path& est);
 /// Whole file as a string ("" if missing).
 std::string readFile(const std::filesystem::path& path);
 

@@ -25,15 +25,7 @@ bool vocabularyBuilt() {
   }
 }
 
-double ateRmse(const fs::path& gt, const fs::path& est) {
-  std::string out;
-  const int code =
-      test::runCli("eval --gt " + gt.string() + " --est " + est.string() + " --json", &out);
-  EXPECT_EQ(code, 0) << out;
-  const auto begin = out.find('{');
-  if (code != 0 || begin == std::string::npos) return 1e9;
-  return nlohmann::json::parse(out.substr(begin))["ate_m"]["rmse"].get<double>();
-}
+using test::ateRmse;  // ATE RMSE as `dynanav eval --json` prints it
 
 TEST(BlackoutDrill, RelocalisesWithinFiveFramesAndKeepsAccuracy) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
