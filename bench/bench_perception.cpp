@@ -122,7 +122,7 @@ void BM_Detector(benchmark::State& state) {
   });
   s.report(state);
 }
-BENCHMARK(BM_Detector)->ArgsProduct({{1, 2}, {320, 256}})->ArgNames({"threads", "input"})
+BENCHMARK(BM_Detector)->ArgsProduct({{1, 2}, {320, 288, 256}})->ArgNames({"threads", "input"})
     ->Iterations(1)->Unit(benchmark::kMillisecond);
 
 /// detector + selfie masks + depth refinement + MoveNet; medians over all frames and over the
@@ -134,6 +134,7 @@ void BM_DnnSegmenter(benchmark::State& state) {
   PerceptionConfig config;
   config.keypoints = state.range(1) != 0;
   config.parallel_person_models = state.range(2) != 0;
+  config.detector_input_px = int(state.range(3));
   DnnSegmenter segmenter(models, config);
   Samples s;
   bool first = true;
@@ -160,8 +161,9 @@ void BM_DnnSegmenter(benchmark::State& state) {
   s.report(state);
 }
 BENCHMARK(BM_DnnSegmenter)
-    ->Args({2, 1, 1})->Args({2, 1, 0})->Args({1, 1, 0})->Args({2, 0, 0})
-    ->ArgNames({"threads", "keypoints", "parallel"})
+    ->Args({2, 1, 1, 320})->Args({2, 1, 1, 288})->Args({2, 1, 1, 256})
+    ->Args({2, 1, 0, 320})->Args({1, 1, 0, 320})->Args({2, 0, 1, 320})
+    ->ArgNames({"threads", "keypoints", "parallel", "input"})
     ->Iterations(1)->Unit(benchmark::kMillisecond);
 
 /// The per-box networks alone on the first person box of each frame: crop, forward, decode.

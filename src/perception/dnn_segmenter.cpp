@@ -41,16 +41,43 @@ Instances paintObjects(std::vector<MaskedObject> objects, const cv::Mat& depth_m
   return out;
 }
 
+DnnSegmenter::PersonModels::PersonModels(const std::filesystem::path& models_dir,
+                                         const PerceptionConfig& config)
+    : selfie(models_dir, config) {
+  if (config.keypoints) keypoints.emplace(models_dir, config);
+}
+
 DnnSegmenter::DnnSegmenter(const std::filesystem::path& models_dir, const PerceptionConfig& config)
     : config_(config),
       detector_(models_dir, config),
-      selfie_(models_dir, config),
       object_classes_(config.object_classes.begin(), config.object_classes.end()) {
-  if (config.keypoints) keypoints_.emplace(models_dir, config);
+  const int lanes = config.parallel_person_models ? 2 : 1;
+  lanes_.reserve(lanes);
+  for (int i = 0; i < lanes; ++i) lanes_.emplace_back(models_dir, config);
 }
 
-cv::Mat DnnSegmenter::personMask(const RgbdFrame& frame, const cv::Rect& box, std::string& source) {
-  cv::Mat mask = selfie_.maskInBox(frame.bgr, box);
+std::vector<std::vector<DnnSegmenter::PersonTask>> DnnSegmenter::scheduleLanes(size_t people) const {
+  // Relative single-thread costs measured by bench_perception on idle cores: MoveNet 16.4 ms,
+  // selfie mask (with depth refinement) 10.8 ms per person. Longest first, each call to the
+  // lane that is free first: two people → each lane runs one MoveNet and one mask.
+  constexpr double kKeypointCost = 3.0, kMaskCost = 2.0;
+  std::vector<PersonTask> tasks;
+  if (config_.keypoints)
+    for (size_t p = 0; p < people; ++p) tasks.push_back({p, true});
+  for (size_t p = 0; p < people; ++p) tasks.push_back({p, false});
+  std::vector<std::vector<PersonTask>> lanes(lanes_.size());
+  std::vector<double> load(lanes_.size(), 0.0);
+  for (const PersonTask& t : tasks) {
+    const size_t lane = size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    lanes[lane].push_back(t);
+    load[lane] += t.keypoints ? kKeypointCost : kMaskCost;
+  }
+  return lanes;
+}
+
+cv::Mat DnnSegmenter::personMask(SelfieSegmenter& selfie, const RgbdFrame& frame, const cv::Rect& box,
+                                 std::string& source) {
+  cv::Mat mask = selfie.maskInBox(frame.bgr, box);
   source = "selfie";
   if (frame.depth_m.empty()) return mask;
   // Keep the person's depth layer: splits two people in one box, trims leaks onto furniture.
@@ -75,11 +102,9 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   timing_["detect_forward"] = dt.forward_ms;
   timing_["detect_post"] = dt.postprocess_ms;
 
-  // Objects first (cheap depth masks), then the people, whose two networks run as two
-  // parallel tasks: selfie masks for all people on one core, MoveNet for all on the other.
-  // cv::parallel_for_ runs nested loops serially, so each network then uses one thread and no
-  // time goes into per-layer synchronisation of two threads (bench_perception, parallel:1 vs
-  // parallel:0: faster in two of three runs on the loaded dev machine, see docs/perception.md).
+  // Objects first (cheap depth masks), then the people's network calls, spread over two
+  // parallel lanes. cv::parallel_for_ runs nested loops serially, so each network then uses one
+  // thread and no time goes into per-layer synchronisation of two threads (docs/perception.md).
   auto t0 = Clock::now();
   std::vector<MaskedObject> objects;
   std::vector<MaskedObject> people;
@@ -100,30 +125,35 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   timing_["object_masks"] = msSince(t0);
 
   t0 = Clock::now();
-  double masks_ms = 0.0, keypoints_ms = 0.0;
-  auto masksTask = [&] {
-    const auto start = Clock::now();
-    for (MaskedObject& p : people) p.mask_in_box = personMask(frame, p.record.box, p.record.mask_source);
-    masks_ms = msSince(start);
+  const std::vector<std::vector<PersonTask>> schedule = scheduleLanes(people.size());
+  std::vector<double> masks_ms(schedule.size(), 0.0), keypoints_ms(schedule.size(), 0.0);
+  auto runLane = [&](size_t lane) {
+    PersonModels& models = lanes_[lane];
+    for (const PersonTask& t : schedule[lane]) {
+      const auto start = Clock::now();
+      MaskedObject& p = people[t.person];
+      if (t.keypoints) {
+        p.record.keypoints = models.keypoints->detect(frame.bgr, p.record.box);
+        keypoints_ms[lane] += msSince(start);
+      } else {
+        p.mask_in_box = personMask(models.selfie, frame, p.record.box, p.record.mask_source);
+        masks_ms[lane] += msSince(start);
+      }
+    }
   };
-  auto keypointsTask = [&] {
-    const auto start = Clock::now();
-    for (MaskedObject& p : people) p.record.keypoints = keypoints_->detect(frame.bgr, p.record.box);
-    keypoints_ms = msSince(start);
-  };
-  if (keypoints_ && !people.empty() && config_.parallel_person_models) {
-    cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& r) {
-      for (int task = r.start; task < r.end; ++task) task == 0 ? masksTask() : keypointsTask();
-    }, 2);
+  if (schedule.size() > 1 && !people.empty()) {
+    cv::parallel_for_(cv::Range(0, int(schedule.size())), [&](const cv::Range& r) {
+      for (int lane = r.start; lane < r.end; ++lane) runLane(size_t(lane));
+    }, double(schedule.size()));
   } else {
-    masksTask();
-    if (keypoints_) keypointsTask();
+    for (size_t lane = 0; lane < schedule.size(); ++lane) runLane(lane);
   }
   timing_["person_models"] = msSince(t0);
   // People take the first ids.
   for (MaskedObject& o : objects) people.push_back(std::move(o));
-  timing_["masks"] = masks_ms;
-  timing_["keypoints"] = keypoints_ms;
+  // Summed over lanes: the time of all people's masks (keypoints), whichever lane ran them.
+  timing_["masks"] = std::accumulate(masks_ms.begin(), masks_ms.end(), 0.0);
+  timing_["keypoints"] = std::accumulate(keypoints_ms.begin(), keypoints_ms.end(), 0.0);
   t0 = Clock::now();
   Instances out = paintObjects(std::move(people), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
   timing_["paint"] = msSince(t0);

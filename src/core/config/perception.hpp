@@ -68,7 +68,7 @@ struct PerceptionConfig {
     v("keypoints", keypoints, "run MoveNet on person boxes (shoulders, hips)");
     v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet");
     v("parallel_person_models", parallel_person_models,
-      "run the selfie model and MoveNet as two parallel single-thread tasks (else one after the other)");
+      "spread the people's selfie and MoveNet calls over two single-thread lanes (else in turn, each on all threads)");
     v("flow_scale", flow_scale, "image scale at which DIS flow is computed for propagation");
     v("propagation_depth_band_m", propagation_depth_band_m,
       "propagated pixels farther than this from the instance's depth mode are dropped (m)");
