@@ -1,11 +1,13 @@
 // dynanav eval: trajectory accuracy (ATE, RPE) and coverage with the TUM benchmark conventions.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
+#include "eval/moving_flags.hpp"
 #include "eval/trajectory_metrics.hpp"
 #include "io/sequence.hpp"
 
@@ -17,12 +19,38 @@ struct EvalOptions {
   std::string est_path;
   std::string sequence_dir;
   double max_dt_s = 0.02;
+  std::string stats_path;      // a run's stats.json: score its moving flags (simulated sequences)
+  int min_visible_px = 3072;   // 1 % of a 640x480 image
   bool json = false;
 };
 
 nlohmann::json toJson(const ErrorStats& s) {
   return {{"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median}, {"std", s.std},
           {"min", s.min},   {"max", s.max},   {"count", s.count}};
+}
+
+/// Moving-flag precision/recall per simulated object, or empty without --stats.
+std::vector<MovingFlagScore> scoreFlags(const EvalOptions& opt) {
+  if (opt.stats_path.empty()) return {};
+  if (opt.sequence_dir.empty()) throw InputError("--stats", "needs --sequence SIM_DIR (its objects_gt.jsonl)");
+  const auto truth = readObjectTruth(std::filesystem::path(opt.sequence_dir) / "objects_gt.jsonl");
+  const auto flagged = readMovingFlags(opt.stats_path);
+  if (truth.size() != flagged.size())
+    throw InputError(opt.stats_path, fmt::format("{} frames of moving flags but {} ground-truth frames in {} "
+                                                 "(score a run over the whole sequence)",
+                                                 flagged.size(), truth.size(), opt.sequence_dir));
+  return scoreMovingFlags(truth, flagged, opt.min_visible_px);
+}
+
+nlohmann::json toJson(const std::vector<MovingFlagScore>& scores) {
+  nlohmann::json out = nlohmann::json::array();
+  auto number = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
+  for (const MovingFlagScore& s : scores)
+    out.push_back({{"id", s.id}, {"class", s.class_name}, {"precision", number(s.precision())},
+                   {"recall", number(s.recall())}, {"true_positive", s.true_positive},
+                   {"false_positive", s.false_positive}, {"false_negative", s.false_negative},
+                   {"true_negative", s.true_negative}, {"out_of_view", s.out_of_view}});
+  return out;
 }
 
 int runEval(const EvalOptions& opt) {
@@ -40,6 +68,7 @@ int runEval(const EvalOptions& opt) {
     total_frames = pairs.size();
     frame_span = std::make_pair(pairs.front().rgb.stamp_s, pairs.back().rgb.stamp_s);
   }
+  const std::vector<MovingFlagScore> flags = scoreFlags(opt);
   const AteResult ate = computeAte(gt, est, opt.max_dt_s);
   const RpeResult rpe = computeRpe(gt, est);
   // A gap of more than 3 median frame intervals in the estimate is time not covered.
@@ -66,6 +95,7 @@ int runEval(const EvalOptions& opt) {
                       {"covered_span_s", cov.covered_span_s},
                       {"gt_span_s", cov.gt_span_s},
                       {"span_share", span_share}}}};
+    if (!opt.stats_path.empty()) out["moving_flags"] = toJson(flags);
     std::cout << out.dump(2) << std::endl;
     return kExitOk;
   }
@@ -81,6 +111,11 @@ int runEval(const EvalOptions& opt) {
                        : fmt::format("{} poses (pass --sequence for frame coverage)", cov.tracked_frames);
   std::cout << fmt::format("coverage  {}; {:.2f} s of {:.2f} s ground-truth span ({:.1f} %)\n",
                            frames, cov.covered_span_s, cov.gt_span_s, 100.0 * span_share);
+  for (const MovingFlagScore& f : flags)
+    std::cout << fmt::format("moving flag  {} {}: precision {:.3f}  recall {:.3f}  (tp {} fp {} fn {} tn {}; "
+                             "{} frames out of view)\n",
+                             f.class_name, f.id, f.precision(), f.recall(), f.true_positive, f.false_positive,
+                             f.false_negative, f.true_negative, f.out_of_view);
   return kExitOk;
 }
 
@@ -96,6 +131,12 @@ void registerEval(CLI::App& root, Action& chosen) {
   sub->add_option("--sequence", opt->sequence_dir,
                   "sequence folder: report tracked/total frames and restrict the span to its frames");
   sub->add_option("--max-dt", opt->max_dt_s, "largest stamp gap for ATE association (s)")
+      ->capture_default_str();
+  sub->add_option("--stats", opt->stats_path,
+                  "a run's stats.json: score each simulated object's per-frame moving flag against "
+                  "--sequence's objects_gt.jsonl (precision, recall)");
+  sub->add_option("--min-visible-px", opt->min_visible_px,
+                  "with --stats: frames where an object shows fewer pixels are not scored")
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "print the results as JSON");
   sub->callback([opt, &chosen] { chosen = [opt] { return runEval(*opt); }; });

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "perception/mask_files.hpp"
+#include "perception/instance_memory.hpp"
 #include "perception/model_files.hpp"
 #include "perception/propagation.hpp"
 #include "perception/segmenters.hpp"
@@ -61,9 +62,13 @@ std::unique_ptr<Segmenter> makeProvider(const SegmenterRequest& request, const P
 std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request, const PerceptionConfig& config) {
   if (request.segment_every < 1)
     throw InputError("--segment-every", "must be at least 1, got " + std::to_string(request.segment_every));
-  auto provider = makeProvider(request, config);
-  if (request.segment_every == 1 || request.name == "none") return provider;
-  return std::make_unique<PropagatingSegmenter>(std::move(provider), request.segment_every, config);
+  std::unique_ptr<Segmenter> segmenter = makeProvider(request, config);
+  if (request.name == "none") return segmenter;
+  if (request.segment_every > 1)
+    segmenter = std::make_unique<PropagatingSegmenter>(std::move(segmenter), request.segment_every, config);
+  if (config.mask_memory_frames > 0)
+    segmenter = std::make_unique<RememberingSegmenter>(std::move(segmenter), config.mask_memory_frames, config);
+  return segmenter;
 }
 
 }  // namespace dynanav

@@ -1,28 +1,15 @@
 // Mask propagation by DIS flow: a textured image shifted by known pixels moves its labels.
 #include <gtest/gtest.h>
 
-#include <opencv2/imgproc.hpp>
-#include <random>
-
 #include "perception/propagation.hpp"
+#include "synthetic_scene.hpp"
 
 using namespace dynanav;
 
 namespace {
 
-cv::Mat texture(cv::Size size, int seed) {
-  cv::Mat noise(size, CV_8UC3);
-  cv::RNG rng{uint64_t(seed)};
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 2.0);  // blobs a few pixels wide, flow-friendly
-  return noise;
-}
-
-cv::Mat shifted(const cv::Mat& image, int dx, int dy) {
-  cv::Mat out;
-  cv::warpAffine(image, out, cv::Matx23d(1, 0, dx, 0, 1, dy), image.size(), cv::INTER_NEAREST, cv::BORDER_REFLECT);
-  return out;
-}
+using test::shifted;
+using test::texture;
 
 TEST(Propagation, LabelsFollowAKnownShift) {
   const cv::Size size(320, 240);

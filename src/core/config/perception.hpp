@@ -40,6 +40,7 @@ struct PerceptionConfig {
   // Propagation between segmented frames (DIS optical flow).
   double flow_scale = 0.5;
   double propagation_depth_band_m = 0.6;
+  int mask_memory_frames = 2;
 
   // Noise injection for the `masks` segmenter (robustness tests; all off by default).
   int mask_noise_grow_px = 0;
@@ -70,6 +71,8 @@ struct PerceptionConfig {
     v("parallel_person_models", parallel_person_models,
       "spread the people's selfie and MoveNet calls over two single-thread lanes (else in turn, each on all threads)");
     v("flow_scale", flow_scale, "image scale at which DIS flow is computed for propagation");
+    v("mask_memory_frames", mask_memory_frames,
+      "an instance the segmenter loses is carried by optical flow for up to this many frames (0 = off)");
     v("propagation_depth_band_m", propagation_depth_band_m,
       "propagated pixels farther than this from the instance's depth mode are dropped (m)");
     v("mask_noise_grow_px", mask_noise_grow_px, "masks segmenter: dilate (>0) or erode (<0) by px");
