@@ -19,7 +19,7 @@ ate() {  # ate SEQ RUN_DIR -> "rmse tracked/total"
 }
 flags() {  # flags SEQ RUN_DIR CLASS -> precision/recall of each object of CLASS that ever moved in view
   "$cli" eval --gt "$1/groundtruth.txt" --est "$2/trajectory.txt" --sequence "$1" --stats "$2/stats.json" |
-    awk -v cls="$3" '$3 == cls && $8 != "nan" {printf "%s%s %s P %s R %s", sep, $3, $4, $6, $8; sep="; "}'
+    awk -v cls="$3" '$3 ~ cls && $8 != "nan" {printf "%s%s %s P %s R %s", sep, $3, $4, $6, $8; sep="; "}'
 }
 row() {  # row LABEL SEQ NAME [run args...]
   local label=$1 seq=$2 name=$3; shift 3
@@ -61,11 +61,11 @@ for scene in office pushed-box standing; do
   sim="$out/sim_$scene"
   [[ -f "$sim/objects_gt.jsonl" ]] || "$cli" simulate --scenario "$scene" --out "$sim" --frames 300 --seed 1 >/dev/null
   row "sim $scene" "$sim" "${scene}_masks" --segmenter masks --deterministic
-  moving+=("sim $scene, masks: $(flags "$sim" "$out/${scene}_masks" box)$(flags "$sim" "$out/${scene}_masks" person)")
+  moving+=("sim $scene, masks: $(flags "$sim" "$out/${scene}_masks" "^(box|person)$")")
   for noise in dilate5_drop20 erode5_drop20; do
     [[ $scene == standing ]] && continue
     row "sim $scene ($noise)" "$sim" "${scene}_$noise" --segmenter masks --deterministic --config "$out/$noise.yaml"
-    moving+=("sim $scene, $noise: $(flags "$sim" "$out/${scene}_$noise" box)")
+    moving+=("sim $scene, $noise: $(flags "$sim" "$out/${scene}_$noise" "^(box|person)$")")
   done
 done
 echo

@@ -119,7 +119,7 @@ BodyKeypoints decodeMoveNet(const cv::Mat& heat, const cv::Mat& centre, const cv
 }
 
 BodyKeypoints KeypointDetector::detect(const cv::Mat& bgr, const cv::Rect& box) {
-  constexpr int kSide = 192;
+  constexpr int kSide = 192;  // fixed: the graph adds 48x48 constants (another size fails to load)
   auto t0 = Clock::now();
   const cv::Rect2f square = squareAround(box, config_.keypoint_crop_scale);
   const cv::Mat crop = warpSquare(bgr, square, kSide);

@@ -29,6 +29,9 @@ std::vector<std::string> readNames(const fs::path& file) {
 
 YoloDetector::YoloDetector(const fs::path& models_dir, const PerceptionConfig& config)
     : config_(config) {
+  if (config.detector_input_px < 64 || config.detector_input_px % 32 != 0)
+    throw InputError("perception.detector_input_px",
+                     "must be a multiple of 32 and at least 64, got " + std::to_string(config.detector_input_px));
   const fs::path cfg = requireModelFile(models_dir, model_files::kDetectorCfg);
   const fs::path weights = requireModelFile(models_dir, model_files::kDetectorWeights);
   names_ = readNames(requireModelFile(models_dir, model_files::kCocoNames));
