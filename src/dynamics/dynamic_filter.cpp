@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <deque>
-#include <map>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
@@ -99,27 +98,6 @@ void DynamicFilter::rejectMovers(Frame& frame) {
   depth_voted_ = r.moving_instances;
 }
 
-namespace {
-/// The current instance that covers most of `old_mask` (0 if none covers a third of it).
-uint16_t dominantLabel(const cv::Mat& labels, const cv::Mat& old_mask) {
-  std::map<uint16_t, int> counts;
-  int total = 0;
-  for (int y = 0; y < labels.rows; y += 2) {
-    const uint16_t* l = labels.ptr<uint16_t>(y);
-    const uint8_t* m = old_mask.ptr<uint8_t>(y);
-    for (int x = 0; x < labels.cols; x += 2) {
-      if (!m[x]) continue;
-      ++total;
-      if (l[x]) ++counts[l[x]];
-    }
-  }
-  uint16_t best = 0;
-  int best_count = 0;
-  for (const auto& [id, count] : counts)
-    if (count > best_count) best = id, best_count = count;
-  return best_count * 3 >= total ? best : 0;
-}
-}  // namespace
 
 void DynamicFilter::verifyPriors(const RgbdFrame& input, const Instances& instances, const Frame& frame,
                                  bool tracked) {
@@ -152,10 +130,14 @@ void DynamicFilter::verifyPriors(const RgbdFrame& input, const Instances& instan
       const bool prior = isPriorDynamic(instance, config_.dynamics);
       if (prior) ++(verdict.dynamic ? current_.prior_moving : current_.prior_static);
       if (!verdict.dynamic) continue;
-      const uint16_t now = instances.labels.empty() ? 0 : dominantLabel(instances.labels, old_mask);
-      if (now == 0) continue;
-      current_.moving_ids.push_back(now);
-      if (!prior) moving_mask.setTo(255, instances.labels == now);
+      if (instances.labels.empty()) continue;
+      // The moving object now: where its sampled pixels went along the flow.
+      if (const uint16_t now = labelAlongFlow(instances.labels, pixels, flow)) current_.moving_ids.push_back(now);
+      // What is cut out of the next frame's extraction keeps the instance now covering the old
+      // mask: following the flow instead (occluders drag a chair's flow along) cut fewer regions
+      // and cost accuracy on Bonn crowd (0.0175 -> 0.0203 m, docs/dynamics.md).
+      if (const uint16_t there = labelAlongFlow(instances.labels, pixels, cv::Mat()); there && !prior)
+        moving_mask.setTo(255, instances.labels == there);
     }
   }
   // Non-prior instances voted moving by the depth test stay cut out in the next frame too (not

@@ -1,6 +1,7 @@
 #include "dynamics/scene_flow.hpp"
 
 #include <cmath>
+#include <map>
 
 #include "core/frame.hpp"
 
@@ -73,6 +74,24 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
     p_cur_camera.push_back(camera.backproject(u1, v1, z1));
     if (kept) kept->push_back(i);
   }
+}
+
+uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels, const cv::Mat& flow) {
+  CV_Assert(labels.type() == CV_16UC1 && (flow.empty() || flow.type() == CV_32FC2));
+  std::map<uint16_t, int> counts;
+  int total = 0;
+  for (const cv::Point& p : old_pixels) {
+    const cv::Vec2f f = flow.empty() ? cv::Vec2f(0.f, 0.f) : flow.at<cv::Vec2f>(p);
+    const int x = int(std::lround(float(p.x) + f[0])), y = int(std::lround(float(p.y) + f[1]));
+    if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
+    ++total;
+    if (const uint16_t l = labels.at<uint16_t>(y, x)) ++counts[l];
+  }
+  uint16_t best = 0;
+  int best_count = 0;
+  for (const auto& [id, count] : counts)
+    if (count > best_count) best = id, best_count = count;
+  return total > 0 && best_count * 3 >= total ? best : 0;
 }
 
 }  // namespace dynanav

@@ -42,4 +42,11 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
                              const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
                              std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept = nullptr);
 
+/// The current instance an old object's sampled pixels land on when followed along the flow
+/// (old frame → current); 0 if no instance gets a third of them. Following the flow matters for
+/// small, fast objects: a walker 4 m away crossing the view moves half its width in 3 frames,
+/// so its old mask barely overlaps its new one. An empty `flow` looks the pixels up where they
+/// were (the instance now covering the old mask).
+uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels, const cv::Mat& flow);
+
 }  // namespace dynanav

@@ -80,3 +80,24 @@ TEST(SceneFlow, SamplingAndLiftingThroughFlow) {
   EXPECT_NEAR(b[0].z(), 2.1, 1e-6);
   EXPECT_NEAR(b[0].x(), (pixels[1].x + 3 - 40) * 2.1 / 50.0, 1e-6);
 }
+
+namespace {
+
+TEST(SceneFlow, LabelFollowsTheFlowNotTheOldMask) {
+  // A 20 px wide object moved 30 px right: its old and new masks do not overlap at all.
+  cv::Mat labels(100, 200, CV_16U, cv::Scalar(0));
+  labels(cv::Rect(80, 20, 20, 60)).setTo(7);
+  cv::Mat old_mask(100, 200, CV_8U, cv::Scalar(0));
+  old_mask(cv::Rect(50, 20, 20, 60)).setTo(255);
+  const auto pixels = sampleMaskPixels(old_mask, 5);
+  const cv::Mat moved(100, 200, CV_32FC2, cv::Scalar(30.f, 0.f));
+  EXPECT_EQ(labelAlongFlow(labels, pixels, moved), 7);
+  const cv::Mat still(100, 200, CV_32FC2, cv::Scalar(0.f, 0.f));
+  EXPECT_EQ(labelAlongFlow(labels, pixels, still), 0);  // without the flow: nothing there
+  const cv::Mat out_of_view(100, 200, CV_32FC2, cv::Scalar(500.f, 0.f));
+  EXPECT_EQ(labelAlongFlow(labels, pixels, out_of_view), 0);
+  labels(cv::Rect(50, 20, 20, 60)).setTo(3);  // something now stands where the object was
+  EXPECT_EQ(labelAlongFlow(labels, pixels, cv::Mat()), 3);  // empty flow: where the pixels were
+}
+
+}  // namespace
