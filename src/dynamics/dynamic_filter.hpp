@@ -31,7 +31,7 @@ struct FrameDynamics {
   int moving_instances = 0;   ///< non-prior instances voted moving by depth difference
   int prior_moving = 0;       ///< prior instances whose scene flow says moving
   int prior_static = 0;       ///< prior instances whose scene flow says static
-  int culled_points = 0;      ///< map points removed because they vanished (moved away)
+  int culled_points = 0;      ///< map points removed: on a moving object, or vanished
   double masked_share = 0.0;  ///< image share cut out of extraction
   std::vector<uint16_t> moving_ids;  ///< moving instance ids (depth vote and scene flow)
 };

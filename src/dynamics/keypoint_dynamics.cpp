@@ -115,6 +115,14 @@ MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
                            std::binary_search(out.moving_instances.begin(), out.moving_instances.end(), f.instance_id[i]);
     if (!result.keypoint_dynamic[i] && !in_moving) continue;
     if (!f.usable[i]) continue;
+    // A point mapped on an object while it stood still is no longer where the map says.
+    if (in_moving && config.cull_moving_object_points) {
+      const MapPointPtr& point = frame.map_points[i];
+      if (point && !point->bad && point->numObservations() > 0) {
+        point->setBad();
+        ++out.culled;
+      }
+    }
     f.usable[i] = 0;
     frame.map_points[i].reset();
     frame.outlier[i] = 0;

@@ -34,7 +34,7 @@ void labelKeypoints(Features& features, const cv::Mat& labels);
 struct MoverRejection {
   int checked = 0;                       ///< keypoints with a map point and depth
   int rejected = 0;                      ///< keypoints made unusable
-  int culled = 0;                        ///< map points removed (measured deeper than predicted)
+  int culled = 0;                        ///< map points removed (on a moving object, or vanished)
   std::vector<uint16_t> moving_instances;  ///< instances voted dynamic (ascending id)
 };
 

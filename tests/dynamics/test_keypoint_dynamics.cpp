@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/keypoint_dynamics.hpp"
+#include "slam/keyframe.hpp"
 
 using namespace dynanav;
 
@@ -86,6 +87,31 @@ TEST(KeypointDynamics, MovingBoxIsRejectedWholeStaticPointsKept) {
   EXPECT_TRUE(frame.map_points[6]);
   EXPECT_FALSE(frame.features.usable[7]);  // judged on its own
   EXPECT_EQ(r.rejected, 7);
+}
+
+TEST(KeypointDynamics, MapPointsOnAMovingObjectAreCulled) {
+  // The box's four moved keypoints and one that agrees are matched to mapped points (seen by a
+  // keyframe); the box is voted moving, so all five points leave the map. The background point
+  // that agrees stays.
+  std::vector<cv::Point2f> px = {{105, 45}, {110, 50}, {115, 55}, {120, 60}, {125, 65}, {70, 100}};
+  std::vector<float> map_z = {2.0f, 2.0f, 2.0f, 2.0f, 2.0f, 3.0f};
+  std::vector<float> meas_z = {1.6f, 1.6f, 1.6f, 1.6f, 2.0f, 3.01f};
+  for (const bool cull : {true, false}) {
+    Frame frame = frameWith(px, map_z, meas_z);
+    labelKeypoints(frame.features, twoObjects().labels);
+    auto kf = std::make_shared<KeyFrame>(0, 0, 0.0, frame.features, SE3::Identity(), frame.map_points);
+    std::vector<MapPointPtr> points = frame.map_points;
+    for (int i = 0; i < frame.size(); ++i) points[i]->addObservation(kf.get(), i);
+    DynamicsConfig c;
+    c.instance_min_points = 5;
+    c.cull_moving_object_points = cull;
+    const MoverRejection r = rejectDepthMovers(frame, c);
+    ASSERT_EQ(r.moving_instances, (std::vector<uint16_t>{2}));
+    EXPECT_EQ(r.culled, cull ? 5 : 0);
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(points[i]->bad, cull) << i;
+    EXPECT_FALSE(points[5]->bad);
+    EXPECT_EQ(kf->map_points[0] == nullptr, cull);  // gone from the keyframe too
+  }
 }
 
 TEST(KeypointDynamics, StaticSceneLosesNothing) {

@@ -21,6 +21,7 @@ struct DynamicsConfig {
   int scene_flow_gap_frames = 3;
   bool scene_flow_mean_check = true;
   bool cull_vanished_points = false;
+  bool cull_moving_object_points = true;
   int sample_step_px = 5;
   template <class V> void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
@@ -53,6 +54,9 @@ struct DynamicsConfig {
       "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is gone: "
       "it lay on something that moved, and is removed from the map (off: on Bonn crowd it cost accuracy, "
       "0.0191 -> 0.0247 m, docs/dynamics.md)");
+    v("cull_moving_object_points", cull_moving_object_points,
+      "map points matched on an object voted moving (depth vote or scene flow) are removed from the map: "
+      "they were mapped while it stood still and are no longer where the map says");
     v("sample_step_px", sample_step_px, "object points are sampled every this many pixels in the mask");
   }
 };
