@@ -1,5 +1,5 @@
 #pragma once
-// Global bundle adjustment after a loop correction (ORB-SLAM2
+// Global bundle adjustment after a loop correction, and at the end of a run (ORB-SLAM2
 // LoopClosing::RunGlobalBundleAdjustment): every keyframe and point in one Ceres problem (keyframe
 // 0 fixed: it defines the world frame), solved on a snapshot without the map lock. Applying the
 // result also moves what was created while it ran: new keyframes follow their spanning-tree parent,

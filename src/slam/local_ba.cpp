@@ -31,24 +31,6 @@ void addObservations(BaProblem& problem, const LocalBaIndex& index) {
 
 }  // namespace
 
-BaProblem buildGlobalBa(const Map& map, LocalBaIndex& index) {
-  BaProblem problem;
-  for (const auto& [id, kf] : map.keyframes()) {
-    if (kf->bad) continue;
-    if (problem.keyframes.empty()) {
-      const PinholeCamera& cam = *kf->features.camera;
-      problem.camera = {cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
-    }
-    problem.keyframes.push_back({kf->id, kf->T_camera_world(), kf->id == 0});
-    index.keyframes.push_back(kf.get());
-  }
-  for (const auto& [id, p] : map.points()) {
-    if (!p->bad) index.points.push_back(p);
-  }
-  addObservations(problem, index);
-  return problem;
-}
-
 BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index) {
   BaProblem problem;
   const PinholeCamera& cam = *keyframe.features.camera;

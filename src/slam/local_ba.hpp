@@ -18,10 +18,6 @@ struct LocalBaIndex {
 /// Snapshot of the local window around `keyframe` (call with the map locked).
 BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index);
 
-/// Snapshot of the whole map (every good keyframe and point; keyframe 0 fixed) for the final
-/// bundle adjustment at the end of a run (call with the map locked).
-BaProblem buildGlobalBa(const Map& map, LocalBaIndex& index);
-
 /// Writes optimised poses and points back and erases the outlier observations (map locked).
 /// Points or keyframes that went bad meanwhile are left alone.
 void applyLocalBa(const BaProblem& problem, const BaResult& result, const LocalBaIndex& index);

@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "slam/global_ba.hpp"
 #include "slam/local_ba.hpp"
 #include "slam/matcher.hpp"
 #include "slam/triangulation.hpp"
@@ -150,23 +151,22 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
 void LocalMapper::finalBundleAdjustment() {
   if (config_.final_ba_iterations <= 0) return;
   const auto start = std::chrono::steady_clock::now();
-  BaProblem problem;
-  LocalBaIndex index;
+  GlobalBaSnapshot snapshot;
   {
     std::unique_lock lock(map_.mutex());
     if (map_.numKeyFrames() < 2) return;
-    problem = buildGlobalBa(map_, index);
+    snapshot = buildGlobalBa(map_);
   }
   BaOptions options;
   options.iterations_first = config_.final_ba_iterations;
   options.iterations_second = config_.final_ba_iterations;
   options.linear_solver = config_.ba_linear_solver;
-  const BaResult result = bundleAdjust(problem, options);
+  const BaResult result = bundleAdjust(snapshot.problem, options);
   std::unique_lock lock(map_.mutex());
-  applyLocalBa(problem, result, index);
+  applyGlobalBa(snapshot, result, map_);
   map_.removeBad();
-  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", problem.keyframes.size(),
-                problem.points.size(), result.initial_rms_px, result.final_rms_px);
+  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", snapshot.problem.keyframes.size(),
+                snapshot.problem.points.size(), result.initial_rms_px, result.final_rms_px);
   if (timers_) timers_->add("final_ba", msSince(start));
 }
 
