@@ -51,3 +51,40 @@ TEST(EvalCli, BadInputExitsTwoNamingTheFile) {
   EXPECT_EQ(test::runCli("eval --gt " + gt.string(), &out), 2);  // --est is required
   EXPECT_EQ(test::runCli("no-such-command", &out), 2);
 }
+
+TEST(EvalCli, StatsScoresMovingFlagsOrSaysWhyNot) {
+  // A short simulated push: the masks run has moving flags to score, the --dynamic off run has
+  // none, and a run over fewer frames than the sequence does not line up with its ground truth.
+  const fs::path seq = test::scratchDir("evalstats_seq");
+  const fs::path on = test::scratchDir("evalstats_on");
+  const fs::path off = test::scratchDir("evalstats_off");
+  const fs::path part = test::scratchDir("evalstats_part");
+  std::string out;
+  ASSERT_EQ(test::runCli("simulate --scenario pushed-box --frames 20 --out " + seq.string(), &out), 0) << out;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + on.string() + " --segmenter masks --quiet", &out), 0) << out;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + off.string() + " --dynamic off --quiet", &out), 0) << out;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + part.string() + " --segmenter masks --max-frames 10 --quiet", &out), 0)
+      << out;
+  const std::string base = "eval --gt " + (seq / "groundtruth.txt").string() + " --sequence " + seq.string();
+  auto evalRun = [&](const fs::path& run, const std::string& extra) {
+    return test::runCli(base + " --est " + (run / "trajectory.txt").string() + " --stats " +
+                            (run / "stats.json").string() + extra, &out);
+  };
+  ASSERT_EQ(evalRun(on, " --json"), 0) << out;
+  const auto json = nlohmann::json::parse(out.substr(out.find('{')));
+  ASSERT_EQ(json["moving_flags"].size(), 2u);  // the person and the box
+  for (const auto& f : json["moving_flags"]) {
+    const int scored = f["true_positive"].get<int>() + f["false_positive"].get<int>() +
+                       f["false_negative"].get<int>() + f["true_negative"].get<int>();
+    EXPECT_EQ(scored + f["out_of_view"].get<int>(), 20) << f.dump();
+  }
+  ASSERT_EQ(evalRun(on, ""), 0) << out;
+  EXPECT_NE(out.find("moving flag  box 2:"), std::string::npos) << out;
+  EXPECT_EQ(evalRun(off, ""), 2);
+  EXPECT_NE(out.find("--dynamic off"), std::string::npos) << out;
+  EXPECT_EQ(evalRun(part, ""), 2);
+  EXPECT_NE(out.find("10 frames of moving flags but 20"), std::string::npos) << out;
+  EXPECT_EQ(test::runCli("eval --gt " + (seq / "groundtruth.txt").string() + " --est " + (on / "trajectory.txt").string() +
+                             " --stats " + (on / "stats.json").string(), &out), 2);  // needs --sequence
+  EXPECT_NE(out.find("--sequence"), std::string::npos) << out;
+}
