@@ -12,7 +12,8 @@ namespace dynanav {
 
 ObjectTruthFrames readObjectTruth(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "cannot open (a simulated sequence has objects_gt.jsonl)");
+  if (!in)
+    throw InputError(path.string(), "cannot open (a simulated sequence has objects_gt.jsonl)");
   ObjectTruthFrames frames;
   int line_no = 0;
   for (std::string line; std::getline(in, line);) {
@@ -23,8 +24,8 @@ ObjectTruthFrames readObjectTruth(const std::filesystem::path& path) {
     try {
       const nlohmann::json frame = nlohmann::json::parse(line);
       for (const auto& o : frame.at("objects"))
-        objects.push_back({o.at("id").get<int>(), o.at("class").get<std::string>(), o.at("dynamic").get<bool>(),
-                           o.at("points").get<int>()});
+        objects.push_back({o.at("id").get<int>(), o.at("class").get<std::string>(),
+                           o.at("dynamic").get<bool>(), o.at("points").get<int>()});
     } catch (const nlohmann::json::exception& e) {
       throw InputError(where, std::string("not an objects_gt frame: ") + e.what());
     }
@@ -72,8 +73,10 @@ std::vector<MovingFlagScore> scoreMovingFlags(const ObjectTruthFrames& truth,
         continue;
       }
       const bool flag = std::find(flagged[f].begin(), flagged[f].end(), o.id) != flagged[f].end();
-      if (o.dynamic) ++(flag ? s.true_positive : s.false_negative);
-      else ++(flag ? s.false_positive : s.true_negative);
+      if (o.dynamic)
+        ++(flag ? s.true_positive : s.false_negative);
+      else
+        ++(flag ? s.false_positive : s.true_negative);
     }
   }
   std::vector<MovingFlagScore> out;

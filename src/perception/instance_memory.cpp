@@ -42,7 +42,8 @@ Instances RememberingSegmenter::segment(const RgbdFrame& frame) {
   std::vector<const Instance*> lost;
   for (const Instance& old : last_items_) {
     const int carried = carried_frames_.count(old.id) ? carried_frames_.at(old.id) : 0;
-    if (carried < memory_frames_ && !hasCounterpart(old, out, kCounterpartIou)) lost.push_back(&old);
+    if (carried < memory_frames_ && !hasCounterpart(old, out, kCounterpartIou))
+      lost.push_back(&old);
   }
   std::map<uint16_t, int> carried_now;
   if (!lost.empty() && propagator_.hasReference()) {
@@ -51,7 +52,8 @@ Instances RememberingSegmenter::segment(const RgbdFrame& frame) {
     for (const Instance* old : lost) {
       const Instance* carried = moved.find(old->id);
       if (!carried) continue;  // left the view or lost its depth layer
-      const cv::Mat free_pixels = (moved.labels(carried->box) == old->id) & (out.labels(carried->box) == 0);
+      const cv::Mat free_pixels =
+          (moved.labels(carried->box) == old->id) & (out.labels(carried->box) == 0);
       if (cv::countNonZero(free_pixels) == 0) continue;
       Instance item = *carried;
       item.id = freeId(out, old->id);
@@ -61,7 +63,8 @@ Instances RememberingSegmenter::segment(const RgbdFrame& frame) {
       carried_now[item.id] = (carried_frames_.count(old->id) ? carried_frames_.at(old->id) : 0) + 1;
       ++carried_total_;
     }
-    std::sort(out.items.begin(), out.items.end(), [](const Instance& a, const Instance& b) { return a.id < b.id; });
+    std::sort(out.items.begin(), out.items.end(),
+              [](const Instance& a, const Instance& b) { return a.id < b.id; });
     tightenToLabels(out);
   }
   propagator_.setReference(frame, out);

@@ -15,7 +15,8 @@ namespace dynanav {
 
 class RememberingSegmenter final : public Segmenter {
  public:
-  RememberingSegmenter(std::unique_ptr<Segmenter> inner, int memory_frames, const PerceptionConfig& config);
+  RememberingSegmenter(std::unique_ptr<Segmenter> inner, int memory_frames,
+                       const PerceptionConfig& config);
   Instances segment(const RgbdFrame& frame) override;
   [[nodiscard]] std::string name() const override { return inner_->name(); }
   /// The wrapped segmenter's steps plus "memory" (ms spent carrying lost instances).

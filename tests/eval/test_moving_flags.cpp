@@ -12,12 +12,15 @@ using namespace dynanav;
 
 namespace {
 
-ObjectTruth box(bool dynamic, int px = 5000) { return {2, "box", dynamic, px}; }
+ObjectTruth box(bool dynamic, int px = 5000) {
+  return {2, "box", dynamic, px};
+}
 
 TEST(MovingFlags, CountsPerObjectAndSkipsFramesOutOfView) {
   // Frames: box static (not flagged), moving (flagged), moving (missed), static (flagged),
   // moving but only 10 px in view (flagged: not scored).
-  const ObjectTruthFrames truth = {{box(false)}, {box(true)}, {box(true)}, {box(false)}, {box(true, 10)}};
+  const ObjectTruthFrames truth = {
+      {box(false)}, {box(true)}, {box(true)}, {box(false)}, {box(true, 10)}};
   const std::vector<std::vector<int>> flagged = {{}, {2}, {}, {2, 7}, {2}};
   const auto scores = scoreMovingFlags(truth, flagged, 100);
   ASSERT_EQ(scores.size(), 1u);
@@ -43,8 +46,10 @@ TEST(MovingFlags, UndefinedRatiosAreNaN) {
 TEST(MovingFlags, ReadsTheSimulatorAndRunFiles) {
   const auto dir = test::scratchDir("moving_flags_files");
   std::ofstream(dir / "objects_gt.jsonl")
-      << R"({"objects":[{"id":1,"class":"person","dynamic":true,"points":900}],"t":0.0})" << "\n"
-      << R"({"objects":[{"id":1,"class":"person","dynamic":false,"points":0}],"t":0.1})" << "\n";
+      << R"({"objects":[{"id":1,"class":"person","dynamic":true,"points":900}],"t":0.0})"
+      << "\n"
+      << R"({"objects":[{"id":1,"class":"person","dynamic":false,"points":0}],"t":0.1})"
+      << "\n";
   std::ofstream(dir / "stats.json")
       << R"({"dynamics":{"enabled":true,"per_frame":{"moving_ids":[[1],[]]}}})";
   const auto truth = readObjectTruth(dir / "objects_gt.jsonl");
@@ -59,7 +64,8 @@ TEST(MovingFlags, ReadsTheSimulatorAndRunFiles) {
 
 TEST(MovingFlags, BadInputNamesTheFile) {
   const auto dir = test::scratchDir("moving_flags_bad");
-  std::ofstream(dir / "objects_gt.jsonl") << R"({"objects":[{"id":1}]})" << "\n";
+  std::ofstream(dir / "objects_gt.jsonl") << R"({"objects":[{"id":1}]})"
+                                          << "\n";
   std::ofstream(dir / "off.json") << R"({"dynamics":{"enabled":false}})";
   try {
     (void)readObjectTruth(dir / "objects_gt.jsonl");

@@ -15,7 +15,8 @@ inline cv::Mat texture(cv::Size size, int seed) {
 
 inline cv::Mat shifted(const cv::Mat& image, int dx, int dy) {
   cv::Mat out;
-  cv::warpAffine(image, out, cv::Matx23d(1, 0, dx, 0, 1, dy), image.size(), cv::INTER_NEAREST, cv::BORDER_REFLECT);
+  cv::warpAffine(image, out, cv::Matx23d(1, 0, dx, 0, 1, dy), image.size(), cv::INTER_NEAREST,
+                 cv::BORDER_REFLECT);
   return out;
 }
 

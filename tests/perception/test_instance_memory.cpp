@@ -50,8 +50,9 @@ struct Scripted final : Segmenter {
 TEST(InstanceMemory, ALostPersonIsCarriedForAtMostTheMemoryFrames) {
   const cv::Mat tex = test::texture(kSize, 7);
   // Seen in frames 0-1, lost in 2-6.
-  RememberingSegmenter memory(std::make_unique<Scripted>(std::deque<bool>{true, true, false, false, false, false, false}),
-                              3, PerceptionConfig{});
+  RememberingSegmenter memory(
+      std::make_unique<Scripted>(std::deque<bool>{true, true, false, false, false, false, false}),
+      3, PerceptionConfig{});
   EXPECT_EQ(memory.name(), "scripted");
   for (int i = 0; i < 7; ++i) {
     const Instances out = memory.segment(frameAt(i, tex));
@@ -105,7 +106,8 @@ TEST(InstanceMemory, ASegmentedInstanceIsNeverOverwritten) {
 
 TEST(InstanceMemory, ASeenInstanceIsNotDuplicated) {
   const cv::Mat tex = test::texture(kSize, 11);
-  RememberingSegmenter memory(std::make_unique<Scripted>(std::deque<bool>{}), 3, PerceptionConfig{});
+  RememberingSegmenter memory(std::make_unique<Scripted>(std::deque<bool>{}), 3,
+                              PerceptionConfig{});
   for (int i = 0; i < 4; ++i) {
     const Instances out = memory.segment(frameAt(i, tex));
     ASSERT_EQ(out.items.size(), 1u);
