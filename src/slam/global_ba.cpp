@@ -1,5 +1,7 @@
 #include "slam/global_ba.hpp"
 
+#include "slam/local_ba.hpp"
+
 namespace dynanav {
 
 GlobalBaSnapshot buildGlobalBa(const Map& map) {
@@ -22,16 +24,7 @@ GlobalBaSnapshot buildGlobalBa(const Map& map) {
     for (const auto& [kf, i] : p->observations) {
       const auto it = slot.find(kf);
       if (it == slot.end()) continue;
-      const Features& f = kf->features;
-      BaObservation obs;
-      obs.keyframe = it->second;
-      obs.point = j;
-      obs.keypoint = i;
-      obs.u = f.points[i].x;
-      obs.v = f.points[i].y;
-      obs.u_right = f.u_right[i];
-      obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
-      s.problem.observations.push_back(obs);
+      s.problem.observations.push_back(baObservation(kf->features, i, it->second, j));
       any = true;
     }
     if (!any) continue;
@@ -84,6 +77,22 @@ void applyGlobalBa(const GlobalBaSnapshot& s, const BaResult& result, Map& map) 
       p->updateNormalAndDepth(*p->observations.begin()->first->features.scales);
   }
   for (const auto& [kf, poses] : moved) kf->setPose(poses.second);
+}
+
+GlobalBaRun runGlobalBa(Map& map, const BaOptions& options) {
+  GlobalBaSnapshot snapshot;
+  {
+    std::unique_lock lock(map.mutex());
+    snapshot = buildGlobalBa(map);
+  }
+  GlobalBaRun run;
+  run.keyframes = snapshot.problem.keyframes.size();
+  run.points = snapshot.problem.points.size();
+  run.result = bundleAdjust(snapshot.problem, options);  // without the lock: tracking goes on
+  std::unique_lock lock(map.mutex());
+  applyGlobalBa(snapshot, run.result, map);
+  map.removeBad();
+  return run;
 }
 
 }  // namespace dynanav

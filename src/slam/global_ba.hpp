@@ -25,4 +25,13 @@ GlobalBaSnapshot buildGlobalBa(const Map& map);
 /// in the snapshot, and erases outlier observations (call with the map locked).
 void applyGlobalBa(const GlobalBaSnapshot& snapshot, const BaResult& result, Map& map);
 
+struct GlobalBaRun {
+  size_t keyframes = 0, points = 0;
+  BaResult result;
+};
+
+/// The whole thing: snapshot under the map lock, solve without it, write back (and drop what went
+/// bad) under it. Used after a loop correction and for the final BA at the end of a run.
+GlobalBaRun runGlobalBa(Map& map, const BaOptions& options);
+
 }  // namespace dynanav

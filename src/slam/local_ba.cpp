@@ -15,21 +15,24 @@ void addObservations(BaProblem& problem, const LocalBaIndex& index) {
     for (const auto& [kf, i] : p->observations) {
       const auto it = slot.find(kf);
       if (it == slot.end()) continue;
-      const Features& f = kf->features;
-      BaObservation obs;
-      obs.keyframe = it->second;
-      obs.point = static_cast<int>(j);
-      obs.keypoint = i;
-      obs.u = f.points[i].x;
-      obs.v = f.points[i].y;
-      obs.u_right = f.u_right[i];
-      obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
-      problem.observations.push_back(obs);
+      problem.observations.push_back(baObservation(kf->features, i, it->second, static_cast<int>(j)));
     }
   }
 }
 
 }  // namespace
+
+BaObservation baObservation(const Features& f, int keypoint, int keyframe_slot, int point_slot) {
+  BaObservation obs;
+  obs.keyframe = keyframe_slot;
+  obs.point = point_slot;
+  obs.keypoint = keypoint;
+  obs.u = f.points[keypoint].x;
+  obs.v = f.points[keypoint].y;
+  obs.u_right = f.u_right[keypoint];
+  obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[keypoint].octave];
+  return obs;
+}
 
 BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index) {
   BaProblem problem;

@@ -15,6 +15,10 @@ struct LocalBaIndex {
   std::vector<MapPointPtr> points;   ///< parallel to BaProblem::points
 };
 
+/// Keypoint `keypoint` of a keyframe as a BA observation of point slot `point_slot` in keyframe
+/// slot `keyframe_slot` (undistorted pixel, virtual right u, inverse level variance).
+BaObservation baObservation(const Features& features, int keypoint, int keyframe_slot, int point_slot);
+
 /// Snapshot of the local window around `keyframe` (call with the map locked).
 BaProblem buildLocalBa(KeyFrame& keyframe, LocalBaIndex& index);
 

@@ -150,23 +150,18 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
 
 void LocalMapper::finalBundleAdjustment() {
   if (config_.final_ba_iterations <= 0) return;
-  const auto start = std::chrono::steady_clock::now();
-  GlobalBaSnapshot snapshot;
   {
     std::unique_lock lock(map_.mutex());
     if (map_.numKeyFrames() < 2) return;
-    snapshot = buildGlobalBa(map_);
   }
+  const auto start = std::chrono::steady_clock::now();
   BaOptions options;
   options.iterations_first = config_.final_ba_iterations;
   options.iterations_second = config_.final_ba_iterations;
   options.linear_solver = config_.ba_linear_solver;
-  const BaResult result = bundleAdjust(snapshot.problem, options);
-  std::unique_lock lock(map_.mutex());
-  applyGlobalBa(snapshot, result, map_);
-  map_.removeBad();
-  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", snapshot.problem.keyframes.size(),
-                snapshot.problem.points.size(), result.initial_rms_px, result.final_rms_px);
+  const GlobalBaRun run = runGlobalBa(map_, options);
+  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes, run.points,
+                run.result.initial_rms_px, run.result.final_rms_px);
   if (timers_) timers_->add("final_ba", msSince(start));
 }
 

@@ -80,24 +80,13 @@ void LoopCloser::process(const KeyFramePtr& keyframe) {
 
 void LoopCloser::globalBundleAdjustment() {
   global_ba_running_ = true;
-  GlobalBaSnapshot snapshot;
-  {
-    std::unique_lock lock(map_.mutex());
-    snapshot = buildGlobalBa(map_);
-  }
   BaOptions options;
   options.iterations_first = config_.global_ba_iterations;
   options.iterations_second = config_.global_ba_iterations;
-  const BaResult result = bundleAdjust(snapshot.problem, options);
-  {
-    std::unique_lock lock(map_.mutex());
-    applyGlobalBa(snapshot, result, map_);
-    map_.removeBad();
-  }
+  const GlobalBaRun run = runGlobalBa(map_, options);
   ++global_bas_;
-  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px",
-               snapshot.problem.keyframes.size(), snapshot.problem.points.size(),
-               result.initial_rms_px, result.final_rms_px);
+  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes, run.points,
+               run.result.initial_rms_px, run.result.final_rms_px);
   global_ba_running_ = false;
 }
 
