@@ -39,10 +39,13 @@ Instances RememberingSegmenter::segment(const RgbdFrame& frame) {
   Instances out = inner_->segment(frame);
   timing_ = inner_->lastTiming();
   const auto start = std::chrono::steady_clock::now();
+  auto framesCarried = [&](uint16_t id) {
+    const auto it = carried_frames_.find(id);
+    return it == carried_frames_.end() ? 0 : it->second;
+  };
   std::vector<const Instance*> lost;
   for (const Instance& old : last_items_) {
-    const int carried = carried_frames_.count(old.id) ? carried_frames_.at(old.id) : 0;
-    if (carried < memory_frames_ && !hasCounterpart(old, out, kCounterpartIou))
+    if (framesCarried(old.id) < memory_frames_ && !hasCounterpart(old, out, kCounterpartIou))
       lost.push_back(&old);
   }
   std::map<uint16_t, int> carried_now;
@@ -60,7 +63,7 @@ Instances RememberingSegmenter::segment(const RgbdFrame& frame) {
       item.mask_source = "memory";
       out.labels(carried->box).setTo(cv::Scalar(item.id), free_pixels);
       out.items.push_back(item);
-      carried_now[item.id] = (carried_frames_.count(old->id) ? carried_frames_.at(old->id) : 0) + 1;
+      carried_now[item.id] = framesCarried(old->id) + 1;
       ++carried_total_;
     }
     std::sort(out.items.begin(), out.items.end(),
