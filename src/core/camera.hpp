@@ -21,6 +21,9 @@ struct PinholeCamera {
   /// bf). Points deeper than `close_depth_baselines` baselines only constrain rotation well.
   double baseline_m = 0.08;
   double close_depth_baselines = 40.0;
+  /// Rolling-shutter readout time of the colour camera (s): the delay between its first and last
+  /// row. 0 = global shutter (or not known). Tracking re-times keypoints with it (slam/rolling_shutter).
+  double readout_s = 0.0;
 
   [[nodiscard]] bool isDistorted() const;
   [[nodiscard]] double bf() const { return fx * baseline_m; }

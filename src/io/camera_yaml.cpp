@@ -37,6 +37,9 @@ PinholeCamera loadCameraYaml(const std::filesystem::path& path) {
   required("cy", camera.cy);
   optional("depth_factor", camera.depth_factor);
   optional("baseline_m", camera.baseline_m);
+  double readout_ms = 0.0;
+  optional("rolling_shutter_readout_ms", readout_ms);
+  camera.readout_s = readout_ms * 1e-3;
   if (root["distortion"]) {
     std::vector<double> d;
     required("distortion", d);
@@ -44,8 +47,9 @@ PinholeCamera loadCameraYaml(const std::filesystem::path& path) {
     std::copy(d.begin(), d.end(), camera.distortion.begin());
   }
   if (camera.width <= 0 || camera.height <= 0 || camera.fx <= 0 || camera.fy <= 0 ||
-      camera.depth_factor <= 0 || camera.baseline_m <= 0) {
-    throw InputError(path.string(), "width, height, fx, fy, depth_factor and baseline_m must be > 0");
+      camera.depth_factor <= 0 || camera.baseline_m <= 0 || camera.readout_s < 0) {
+    throw InputError(path.string(), "width, height, fx, fy, depth_factor and baseline_m must be > 0, "
+                                   "rolling_shutter_readout_ms >= 0");
   }
   return camera;
 }
@@ -63,6 +67,7 @@ void saveCameraYaml(const std::filesystem::path& path, const PinholeCamera& came
     << std::vector<double>(camera.distortion.begin(), camera.distortion.end());
   e << YAML::Key << "depth_factor" << YAML::Value << camera.depth_factor;
   e << YAML::Key << "baseline_m" << YAML::Value << camera.baseline_m;
+  e << YAML::Key << "rolling_shutter_readout_ms" << YAML::Value << camera.readout_s * 1e3;
   e << YAML::EndMap;
   std::ofstream out(path);
   if (!out) throw InputError(path.string(), "cannot write camera file");

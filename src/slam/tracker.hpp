@@ -13,6 +13,7 @@
 #include "slam/map.hpp"
 #include "slam/mapping_stage.hpp"
 #include "slam/relocaliser.hpp"
+#include "slam/rolling_shutter.hpp"
 
 namespace dynanav {
 
@@ -50,6 +51,9 @@ class Tracker {
   /// temporary points from depth so the motion model has close points to match.
   void updateLastFrame();
   void rememberAsLast(const Frame& frame);
+  /// Re-times the frame's keypoints (from `as_read`) with its own motion since the last frame
+  /// and re-optimises its pose; returns the local-map inliers left.
+  int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read, double readout_s) const;
 
   Map& map_;
   MappingStage& mapping_;
@@ -60,6 +64,7 @@ class Tracker {
   SE3 T_last_reference_ = SE3::Identity();  ///< last frame pose relative to its reference
   bool last_is_keyframe_ = false;
   SE3 velocity_ = SE3::Identity();          ///< T_current_last of the last tracked pair
+  double velocity_interval_s_ = 0.0;        ///< time between that pair's frames
   bool has_velocity_ = false;
   KeyFramePtr reference_;
   LocalMap local_;

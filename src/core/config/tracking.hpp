@@ -26,6 +26,7 @@ struct TrackingConfig {
   int keyframe_close_tracked_min = 100;
   int keyframe_close_untracked_max = 70;
   int new_points_min = 100;
+  double rolling_shutter_readout_ms = -1.0;
   template <class V> void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored");
     v("init_min_depth_features", init_min_depth_features,
@@ -54,6 +55,9 @@ struct TrackingConfig {
       "untracked close points above which (with few tracked) a keyframe is needed");
     v("new_points_min", new_points_min,
       "map points created from depth per keyframe before stopping at far points");
+    v("rolling_shutter_readout_ms", rolling_shutter_readout_ms,
+      "colour camera's rolling-shutter readout time (ms) for keypoint re-timing; -1 = the "
+      "camera's own (camera.yaml / built-in calibration), 0 = treat as global shutter");
   }
 };
 

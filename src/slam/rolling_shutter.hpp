@@ -1,0 +1,45 @@
+#pragma once
+// Rolling-shutter compensation for RGB-D keypoints. A rolling-shutter colour camera (the Kinect's
+// and the Asus Xtion's) exposes its rows one after another over the readout time, so a keypoint
+// in row v was seen (v/H - 1/2) * readout later than the image's middle row. While the camera
+// turns or moves, the image is sheared; fitting one rigid pose to it biases the pose (on TUM fr1_xyz
+// by up to 2-3 cm where the camera moves fast, docs/slam.md). ORB-SLAM2 ignores this.
+//
+// We move every keypoint's measurement (undistorted pixel, depth, virtual right coordinate) to
+// where the camera would have seen it at the middle row's time, using the constant-velocity
+// motion model the tracker already keeps. The pose then describes the whole image at one instant.
+#include "core/se3.hpp"
+#include "slam/features.hpp"
+
+namespace dynanav {
+
+/// Motion of the camera over one frame interval: T_current_last maps the last frame's camera
+/// coordinates to the current one's (the tracker's velocity), measured over `interval_s`.
+struct CameraVelocity {
+  SE3 T_current_last = SE3::Identity();
+  double interval_s = 0.0;
+};
+
+/// Camera motion from the middle row's time to `dt_s` seconds later, by scaling the velocity's
+/// rotation vector and translation (first order; frame-to-frame motion is small).
+SE3 motionOver(const CameraVelocity& velocity, double dt_s);
+
+/// The keypoint measurements compensation changes, kept to re-time them again with a better
+/// velocity (the tracker first uses the last pair's motion, then the current frame's own).
+struct KeypointMeasurements {
+  std::vector<cv::Point2f> points;
+  std::vector<float> depth_m, u_right;
+  static KeypointMeasurements of(const Features& f) { return {f.points, f.depth_m, f.u_right}; }
+  void restoreInto(Features& f) const {
+    f.points = points;
+    f.depth_m = depth_m;
+    f.u_right = u_right;
+  }
+};
+
+/// Re-times f's keypoints to the middle row (see above) for a readout of `readout_s` seconds.
+/// Keypoints with depth move with the full motion; those without are treated as far away
+/// (rotation only). Rebuilds the feature grid. No-op for readout_s <= 0 or interval_s <= 0.
+void compensateRollingShutter(Features& f, const CameraVelocity& velocity, double readout_s);
+
+}  // namespace dynanav
