@@ -52,9 +52,9 @@ PinholeCamera PinholeCamera::tumFreiburg1() {
   c.fx = 517.306408; c.fy = 516.469215; c.cx = 318.643040; c.cy = 255.313989;
   c.distortion = {0.262383, -0.953104, -0.005358, 0.002628, 1.163314};
   // Kinect v1 colour camera, rolling shutter. Not published with the dataset: chosen from the
-  // readout sweep on the first half of fr1_xyz (docs/slam.md, "Rolling shutter"); 20 ms of the
+  // readout sweep on the first half of fr1_xyz (docs/slam.md, "Rolling shutter"); 25 ms of the
   // 33 ms frame period.
-  c.readout_s = 0.020;
+  c.readout_s = 0.025;
   return c;
 }
 

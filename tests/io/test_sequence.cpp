@@ -139,6 +139,12 @@ TEST(CameraYaml, RoundTripAndErrors) {
   const PinholeCamera back = loadCameraYaml(dir / "camera.yaml");
   EXPECT_DOUBLE_EQ(back.fx, cam.fx);
   EXPECT_DOUBLE_EQ(back.distortion[4], cam.distortion[4]);
+  EXPECT_NEAR(back.readout_s, 0.025, 1e-12);  // fr1's rolling shutter survives the round trip
+  writeText(dir / "no_readout.yaml", "width: 640\nheight: 480\nfx: 5\nfy: 5\ncx: 1\ncy: 1\n");
+  EXPECT_EQ(loadCameraYaml(dir / "no_readout.yaml").readout_s, 0.0);  // global shutter by default
+  writeText(dir / "neg_readout.yaml",
+            "width: 640\nheight: 480\nfx: 5\nfy: 5\ncx: 1\ncy: 1\nrolling_shutter_readout_ms: -3\n");
+  EXPECT_NE(errorOf([&] { loadCameraYaml(dir / "neg_readout.yaml"); }).find("readout"), std::string::npos);
   writeText(dir / "bad.yaml", "width: 640\nheight: 480\nfx: 500\n");
   EXPECT_NE(errorOf([&] { loadCameraYaml(dir / "bad.yaml"); }).find("'fy'"), std::string::npos);
   writeText(dir / "neg.yaml", "width: 640\nheight: 480\nfx: -5\nfy: 5\ncx: 1\ncy: 1\n");

@@ -1,6 +1,7 @@
 // Whole runs on the real fr1_xyz sequence: accuracy, coverage, outputs, determinism.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "io/json_io.hpp"
@@ -31,11 +32,28 @@ TEST(RunFr1Xyz, TracksEveryFrameAccurately) {
     EXPECT_TRUE(stats["stage_ms"].contains(stage)) << stage;
   const auto est = readTrajectory(out / "trajectory.txt");
   ASSERT_EQ(est.size(), 244u);
-  // ORB-SLAM2 gets 0.0102 m here; we measure 0.0103 (docs/slam.md). The margin absorbs small
-  // algorithm changes but not a broken tracker (those give several centimetres).
-  EXPECT_LT(ateRmse(seq / "groundtruth.txt", out / "trajectory.txt"), 0.013);
+  // ORB-SLAM2 gets 0.0102 m here, the issue asks <= 0.0095; we measure 0.0053 (docs/slam.md).
+  // The margin absorbs small algorithm changes but not a broken tracker or a lost rolling-shutter
+  // re-timing (0.0103 without it).
+  EXPECT_LT(ateRmse(seq / "groundtruth.txt", out / "trajectory.txt"), 0.0085);
   const auto keyframes = readTrajectory(out / "keyframes.txt");
   EXPECT_EQ(static_cast<int>(keyframes.size()), stats["keyframes"].get<int>());
+}
+
+TEST(RunFr1Xyz, RollingShutterRetimingIsWhatMakesItAccurate) {
+  // fr1's built-in camera has a 25 ms readout; a config of 0 treats it as a global shutter.
+  DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
+  const fs::path out = test::scratchDir("run_fr1_xyz_global_shutter");
+  const fs::path config = out / "global_shutter.yaml";
+  std::ofstream(config) << "tracking:\n  rolling_shutter_readout_ms: 0\n";
+  std::string log;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --config " +
+                             config.string() + " --dynamic off --quiet",
+                         &log),
+            0)
+      << log;
+  EXPECT_GT(ateRmse(seq / "groundtruth.txt", out / "trajectory.txt"), 0.0095);
+  EXPECT_NE(test::readFile(out / "config_used.yaml").find("rolling_shutter_readout_ms: 0"), std::string::npos);
 }
 
 TEST(RunFr1Xyz, DeterministicModeIsBitIdentical) {
