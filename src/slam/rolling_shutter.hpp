@@ -2,8 +2,8 @@
 // Rolling-shutter compensation for RGB-D keypoints. A rolling-shutter colour camera (the Kinect's
 // and the Asus Xtion's) exposes its rows one after another over the readout time, so a keypoint
 // in row v was seen (v/H - 1/2) * readout later than the image's middle row. While the camera
-// turns or moves, the image is sheared; fitting one rigid pose to it biases the pose (on TUM fr1_xyz
-// by up to 2-3 cm where the camera moves fast, docs/slam.md). ORB-SLAM2 ignores this.
+// turns or moves, the image is sheared; fitting one rigid pose to it biases the pose (on TUM
+// fr1_xyz by up to 2-3 cm where the camera moves fast, docs/slam.md). ORB-SLAM2 ignores this.
 //
 // We move every keypoint's measurement (undistorted pixel, depth, virtual right coordinate) to
 // where the camera would have seen it at the middle row's time, using the constant-velocity

@@ -69,7 +69,8 @@ double worstPixelError(const Scene& s) {
   double worst = 0.0;
   for (int i = 0; i < s.features.size(); ++i) {
     const Eigen::Vector2d uv = s.features.camera->project(s.p_mid[i]);
-    worst = std::max(worst, std::hypot(uv.x() - s.features.points[i].x, uv.y() - s.features.points[i].y));
+    worst = std::max(worst,
+                     std::hypot(uv.x() - s.features.points[i].x, uv.y() - s.features.points[i].y));
   }
   return worst;
 }
@@ -88,7 +89,8 @@ TEST(RollingShutter, RetimedKeypointsMatchTheMiddleRowCamera) {
   for (int i = 0; i < s.features.size(); ++i) {
     if (!s.features.hasDepth(i)) continue;
     EXPECT_NEAR(s.features.depth_m[i], s.p_mid[i].z(), 1e-4);
-    EXPECT_NEAR(s.features.u_right[i], s.features.points[i].x - s.features.camera->bf() / s.p_mid[i].z(), 1e-2);
+    EXPECT_NEAR(s.features.u_right[i],
+                s.features.points[i].x - s.features.camera->bf() / s.p_mid[i].z(), 1e-2);
   }
 }
 
@@ -97,7 +99,8 @@ TEST(RollingShutter, GridFollowsTheMovedKeypoints) {
   Scene s = makeScene(velocity);
   compensateRollingShutter(s.features, velocity, kReadout);
   for (int i = 0; i < s.features.size(); ++i) {
-    const auto near = s.features.featuresInArea(s.features.points[i].x, s.features.points[i].y, 1.f);
+    const auto near =
+        s.features.featuresInArea(s.features.points[i].x, s.features.points[i].y, 1.f);
     EXPECT_NE(std::find(near.begin(), near.end(), i), near.end()) << "keypoint " << i;
   }
 }
