@@ -61,6 +61,11 @@ void registerSimulate(CLI::App& root, Action& chosen) {
       ->capture_default_str()
       ->check(CLI::Range(1.0, 1000.0));
   sub->add_flag("--noiseless", args->options.noiseless, "exact depth and clean colour (for tests)");
+  sub->add_option_function<double>(
+         "--rolling-shutter-ms", [args](double ms) { args->options.readout_s = ms * 1e-3; },
+         "rolling-shutter readout of the camera (ms; 0 = global shutter, the default); written to "
+         "camera.yaml")
+      ->check(CLI::Range(0.0, 1000.0));
   sub->add_flag("!--no-photos", args->options.photos,
                 "posters without the opencv-doc example photos");
   sub->add_flag("--list", args->list, "list the scenarios and exit");

@@ -36,9 +36,11 @@ int clipNear(const ClipVertex in[3], ClipVertex out[4]) {
 
 void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_world,
                         const std::vector<DrawItem>& items, const TextureSet& textures,
-                        RenderBuffers& out, const Lighting& lighting) {
+                        RenderBuffers& out, const Lighting& lighting, int row_begin, int row_end) {
   width_ = camera.width;
   height_ = camera.height;
+  row_begin_ = std::clamp(row_begin, 0, height_);
+  row_end_ = row_end < 0 ? height_ : std::clamp(row_end, row_begin_, height_);
   tris_.clear();
   std::vector<Vec3f> p_camera;
   for (const DrawItem& item : items) {
@@ -89,9 +91,10 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
   out.bgr.create(height_, width_, CV_8UC3);
   out.depth_m.create(height_, width_, CV_32F);
   out.instance.create(height_, width_, CV_16U);
+  const int rows = row_end_ - row_begin_;
   cv::parallel_for_(cv::Range(0, kStripes), [&](const cv::Range& r) {
     for (int s = r.start; s < r.end; ++s) {
-      const int y0 = height_ * s / kStripes, y1 = height_ * (s + 1) / kStripes;
+      const int y0 = row_begin_ + rows * s / kStripes, y1 = row_begin_ + rows * (s + 1) / kStripes;
       rasterRows(y0, y1);
       shadeRows(y0, y1, textures, out);
     }
@@ -107,7 +110,7 @@ void Rasterizer::addTriangle(const PinholeCamera& camera, const Vec3f p[3], cons
   }
   const double xmin = std::min({sx[0], sx[1], sx[2]}), xmax = std::max({sx[0], sx[1], sx[2]});
   const double ymin = std::min({sy[0], sy[1], sy[2]}), ymax = std::max({sy[0], sy[1], sy[2]});
-  if (xmax < 0 || ymax < 0 || xmin > width_ - 1 || ymin > height_ - 1) return;
+  if (xmax < 0 || ymax < row_begin_ || xmin > width_ - 1 || ymin > row_end_ - 1) return;
   const double area2 = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
   if (std::abs(area2) < 1e-9) return;
   ScreenTri t;

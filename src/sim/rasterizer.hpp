@@ -30,10 +30,13 @@ class Rasterizer {
  public:
   static constexpr float kNearPlaneM = 0.05f;
 
-  /// Renders the items seen from T_camera_world (camera x right, y down, z forward).
+  /// Renders the items seen from T_camera_world (camera x right, y down, z forward) into the
+  /// rows [row_begin, row_end) of `out` (row_end < 0: to the bottom); other rows of an `out` of
+  /// the right size are left as they are, so a rolling shutter can compose bands of rows seen
+  /// from different poses.
   void render(const PinholeCamera& camera, const Pose3f& T_camera_world,
               const std::vector<DrawItem>& items, const TextureSet& textures, RenderBuffers& out,
-              const Lighting& lighting = {});
+              const Lighting& lighting = {}, int row_begin = 0, int row_end = -1);
 
   /// Screen-space triangle after clipping: plane equations in pixel coordinates.
   struct ScreenTri {
@@ -56,6 +59,7 @@ class Rasterizer {
   std::vector<ScreenTri> tris_;
   cv::Mat inv_z_, tri_index_, bary1_, bary2_;  // visibility buffers
   int width_ = 0, height_ = 0;
+  int row_begin_ = 0, row_end_ = 0;  // the band being rendered
 };
 
 }  // namespace dynanav::sim

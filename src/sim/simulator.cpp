@@ -22,6 +22,9 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (options.frames < 0) throw InputError("--frames", "must be >= 0 (0 = the scenario's length)");
   if (!(options.texels_per_m >= 10.0f && options.texels_per_m <= 1000.0f))
     throw InputError("texels_per_m", "must be in [10, 1000]");
+  if (!(options.readout_s >= 0.0 && options.readout_s <= 1.0 / options.fps))
+    throw InputError("--rolling-shutter-ms", "must be in [0, frame period = " +
+                                                 std::to_string(1000.0 / options.fps) + " ms]");
   const PhotoLibrary photos = options.photos ? PhotoLibrary::systemDefault() : PhotoLibrary();
   scene_ = buildScenario(options.scenario, options.seed, photos, options.texels_per_m);
   frames_ = options.frames > 0 ? options.frames
@@ -33,6 +36,7 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
   camera_.cx = 319.5;
   camera_.cy = 239.5;
   camera_.depth_factor = 5000.0;
+  camera_.readout_s = options.readout_s;  // camera.yaml says it: SLAM re-times with the truth
   options_.depth.focal_px = camera_.fx;
   // The world frame is the first camera frame, so the first ground-truth pose is the identity.
   T_world_room_ = scene_->T_room_camera(stamp(0)).inverse();
@@ -57,7 +61,11 @@ nlohmann::json Simulator::masksJson() const {
 }
 
 void Simulator::drawItems(int i, std::vector<DrawItem>& items) const {
-  scene_->drawItems(stamp(i), items);
+  drawItemsAt(stamp(i), items);
+}
+
+void Simulator::drawItemsAt(double stamp_s, std::vector<DrawItem>& items) const {
+  scene_->drawItems(stamp_s, items);
   const Pose3f T = T_world_room_.cast<float>();
   for (DrawItem& item : items) item.T_world_mesh = T * item.T_world_mesh;
 }
@@ -74,8 +82,12 @@ SimFrame Simulator::render(int i) {
   lighting.towards_light_world =
       T_world_room_.linear().cast<float>() * lighting.towards_light_world;
   RenderBuffers buffers;
-  rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_,
-                     scene_->world.textures, buffers, lighting);
+  if (options_.readout_s > 0.0) {
+    renderRollingShutter(f, lighting, buffers);
+  } else {
+    rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_,
+                       scene_->world.textures, buffers, lighting);
+  }
   f.bgr = buffers.bgr;
   f.depth_true_m = buffers.depth_m;
   f.instance = buffers.instance;
@@ -113,6 +125,21 @@ SimFrame Simulator::render(int i) {
   }
   f.objects = {{"t", f.stamp_s}, {"objects", objects}};
   return f;
+}
+
+void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting,
+                                     RenderBuffers& out) {
+  // Bands of 16 rows: at a 25 ms readout each band spans 0.8 ms, far below what tracking sees.
+  constexpr int kBandRows = 16;
+  std::vector<DrawItem> band_items;
+  for (int y0 = 0; y0 < camera_.height; y0 += kBandRows) {
+    const int y1 = std::min(camera_.height, y0 + kBandRows);
+    const double t = f.stamp_s + (0.5 * (y0 + y1) / camera_.height - 0.5) * options_.readout_s;
+    const SE3 T_world_camera = T_world_room_ * scene_->T_room_camera(t);
+    drawItemsAt(t, band_items);
+    rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), band_items,
+                       scene_->world.textures, out, lighting, y0, y1);
+  }
 }
 
 }  // namespace dynanav::sim

@@ -25,6 +25,10 @@ struct SimOptions {
       false;           ///< exact depth everywhere (no noise, range limits, holes), no colour noise
   bool photos = true;  ///< posters may use Debian's opencv-doc images when installed
   float texels_per_m = 200.0f;  ///< texture resolution on surfaces
+  /// Rolling-shutter readout (s) of the camera, colour and depth alike: row v is seen
+  /// (v/H - 1/2) * readout after the frame's stamp (the middle row's time, which the ground
+  /// truth pose describes). 0 = global shutter.
+  double readout_s = 0.0;
   DepthSensorModel depth;
   ColourSensorModel colour;
 };
@@ -62,6 +66,8 @@ class Simulator {
   [[nodiscard]] SimFrame render(int i);
   /// The world-frame draw list of frame i (the geometry behind render(i); for tests).
   void drawItems(int i, std::vector<DrawItem>& items) const;
+  /// The same at any time (a rolling shutter sees each band of rows at its own time).
+  void drawItemsAt(double stamp_s, std::vector<DrawItem>& items) const;
 
  private:
   SimOptions options_;
@@ -69,6 +75,8 @@ class Simulator {
   PinholeCamera camera_;
   SE3 T_world_room_ = SE3::Identity();
   int frames_ = 0;
+  /// Renders frame f's image band by band, each band from the pose and scene at its rows' time.
+  void renderRollingShutter(const SimFrame& f, const Lighting& lighting, RenderBuffers& out);
   Rasterizer rasterizer_;
   std::vector<DrawItem> items_;
 };
