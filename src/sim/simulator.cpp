@@ -77,7 +77,6 @@ SimFrame Simulator::render(int i) {
   const SE3 T_room_camera = scene_->T_room_camera(f.stamp_s);
   // Frame 0 is the identity by definition (not just up to rounding), as the files promise.
   f.T_world_camera = i == 0 ? SE3::Identity() : SE3(T_world_room_ * T_room_camera);
-  drawItems(i, items_);
   Lighting lighting;
   lighting.towards_light_world =
       T_world_room_.linear().cast<float>() * lighting.towards_light_world;
@@ -85,6 +84,7 @@ SimFrame Simulator::render(int i) {
   if (options_.readout_s > 0.0) {
     renderRollingShutter(f, lighting, buffers);
   } else {
+    drawItems(i, items_);
     rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_,
                        scene_->world.textures, buffers, lighting);
   }
@@ -131,13 +131,12 @@ void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting
                                      RenderBuffers& out) {
   // Bands of 16 rows: at a 25 ms readout each band spans 0.8 ms, far below what tracking sees.
   constexpr int kBandRows = 16;
-  std::vector<DrawItem> band_items;
   for (int y0 = 0; y0 < camera_.height; y0 += kBandRows) {
     const int y1 = std::min(camera_.height, y0 + kBandRows);
     const double t = f.stamp_s + (0.5 * (y0 + y1) / camera_.height - 0.5) * options_.readout_s;
     const SE3 T_world_camera = T_world_room_ * scene_->T_room_camera(t);
-    drawItemsAt(t, band_items);
-    rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), band_items,
+    drawItemsAt(t, items_);
+    rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), items_,
                        scene_->world.textures, out, lighting, y0, y1);
   }
 }

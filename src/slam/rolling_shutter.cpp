@@ -2,31 +2,22 @@
 
 namespace dynanav {
 
-namespace {
-/// The share s of a motion given by its rotation vector and translation.
-SE3 scaledMotion(const Vec3& omega, const Vec3& translation, double s) {
-  SE3 T = SE3::Identity();
-  T.linear() = expSO3(s * omega);
-  T.translation() = s * translation;
-  return T;
-}
-}  // namespace
-
 SE3 motionOver(const CameraVelocity& velocity, double dt_s) {
-  return scaledMotion(logSO3(velocity.T_current_last.linear()),
-                      velocity.T_current_last.translation(), dt_s / velocity.interval_s);
+  const double s = dt_s / velocity.interval_s;
+  SE3 T = SE3::Identity();
+  T.linear() = expSO3(s * velocity.omega);
+  T.translation() = s * velocity.translation;
+  return T;
 }
 
 void compensateRollingShutter(Features& f, const CameraVelocity& velocity, double readout_s) {
   if (readout_s <= 0.0 || velocity.interval_s <= 0.0 || f.size() == 0) return;
   const PinholeCamera& camera = *f.camera;
   const double bf = camera.bf();
-  const Vec3 omega = logSO3(velocity.T_current_last.linear());  // once per frame, not per keypoint
-  const Vec3& translation = velocity.T_current_last.translation();
   for (int i = 0; i < f.size(); ++i) {
     // The sensor row is the raw (distorted) one: that is the row the shutter read.
     const double dt = (f.keypoints[i].pt.y / camera.height - 0.5) * readout_s;
-    const SE3 T_row_mid = scaledMotion(omega, translation, dt / velocity.interval_s);  // mid -> row
+    const SE3 T_row_mid = motionOver(velocity, dt);  // mid-row camera -> row camera
     if (f.hasDepth(i)) {
       const Vec3 p_mid = T_row_mid.inverse() * f.backproject(i);
       if (p_mid.z() <= 0.0) continue;

@@ -13,11 +13,16 @@
 
 namespace dynanav {
 
-/// Motion of the camera over one frame interval: T_current_last maps the last frame's camera
-/// coordinates to the current one's (the tracker's velocity), measured over `interval_s`.
+/// Motion of the camera over one frame interval `interval_s`, as a rotation vector and a
+/// translation: those of T_current_last, which maps the last frame's camera coordinates to the
+/// current one's (the tracker's velocity).
 struct CameraVelocity {
-  SE3 T_current_last = SE3::Identity();
+  Vec3 omega = Vec3::Zero();
+  Vec3 translation = Vec3::Zero();
   double interval_s = 0.0;
+  static CameraVelocity of(const SE3& T_current_last, double interval_s) {
+    return {logSO3(T_current_last.linear()), T_current_last.translation(), interval_s};
+  }
 };
 
 /// Camera motion from the middle row's time to `dt_s` seconds later, by scaling the velocity's

@@ -89,23 +89,14 @@ int Tracker::retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_re
   // frame's own motion since the last one (fr1_xyz at 20 ms: ATE 0.0068 -> 0.0053 m, RPE
   // 0.0066 -> 0.0045 m/frame against the prediction alone; docs/slam.md).
   as_read.restoreInto(frame.features);
-  const CameraVelocity own{orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse()),
-                           frame.stamp_s - last_.stamp_s};
-  compensateRollingShutter(frame.features, own, readout_s);
+  const SE3 own = orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse());
+  compensateRollingShutter(frame.features, CameraVelocity::of(own, frame.stamp_s - last_.stamp_s),
+                           readout_s);
   optimizeFramePose(frame, config_);
-  int inliers = 0;
-  for (int i = 0; i < frame.size(); ++i) {
-    MapPointPtr& point = frame.map_points[i];
-    if (!point) continue;
-    if (frame.outlier[i]) {  // it was counted found by local-map tracking
-      --point->found;
-      point.reset();
-      frame.outlier[i] = 0;
-    } else if (point->numObservations() > 0) {
-      ++inliers;
-    }
-  }
-  return inliers;
+  // Local-map tracking counted every match it kept as found; new outliers take that back.
+  for (int i = 0; i < frame.size(); ++i)
+    if (frame.map_points[i] && frame.outlier[i]) --frame.map_points[i]->found;
+  return discardOutliers(frame);
 }
 
 void Tracker::rememberAsLast(const Frame& frame) {
@@ -140,7 +131,8 @@ TrackOutcome Tracker::track(Frame& frame) {
   KeypointMeasurements as_read;
   if (retime) {
     as_read = KeypointMeasurements::of(frame.features);
-    compensateRollingShutter(frame.features, {velocity_, velocity_interval_s_}, readout_s);
+    compensateRollingShutter(frame.features, CameraVelocity::of(velocity_, velocity_interval_s_),
+                             readout_s);
   }
   if (!was_lost) {
     updateLastFrame();

@@ -13,11 +13,10 @@ constexpr double kReadout = 0.020;
 constexpr double kInterval = 1.0 / 30.0;
 
 CameraVelocity makeVelocity(const Vec3& omega_per_frame, const Vec3& t_per_frame) {
-  CameraVelocity v;
-  v.T_current_last.linear() = expSO3(omega_per_frame);
-  v.T_current_last.translation() = t_per_frame;
-  v.interval_s = kInterval;
-  return v;
+  SE3 T_current_last = SE3::Identity();
+  T_current_last.linear() = expSO3(omega_per_frame);
+  T_current_last.translation() = t_per_frame;
+  return CameraVelocity::of(T_current_last, kInterval);
 }
 
 /// Where a rolling-shutter camera sees p_mid (a point in the middle-row camera frame): the row
