@@ -19,11 +19,12 @@ struct RunFlags {
   std::string config_path;
   std::string dynamic;
   std::string blackout;
-  std::string segmenter;      // issue 7 (dynamics): segmenter, models and segmentation rate
+  std::string segmenter;  // issue 7 (dynamics): segmenter, models and segmentation rate
   std::string models;
   int segment_every = 0;
   bool deterministic = false;
   bool realtime = false;
+  bool unpaced = false;
   int max_frames = 0;
   bool quiet = false;
 };
@@ -40,11 +41,18 @@ int runCommand(const RunFlags& flags) {
   if (flags.segment_every > 0) options.config.run.segment_every = flags.segment_every;
   if (flags.deterministic && flags.realtime)
     throw InputError("", "--deterministic and --realtime exclude each other");
-  if (flags.deterministic) options.config.run.deterministic = true;
+  if (flags.deterministic) {
+    options.config.run.deterministic = true;
+    options.config.run.realtime = false;
+  }
+  if (flags.unpaced && !flags.realtime) throw InputError("--unpaced", "only goes with --realtime");
   if (flags.realtime) {
     options.config.run.deterministic = false;
     options.config.run.realtime = true;
+    if (flags.unpaced) options.config.run.paced = false;
   }
+  // A config file may ask for real time; deterministic mode means one thread, so both agree.
+  if (options.config.run.realtime && !flags.deterministic) options.config.run.deterministic = false;
   if (flags.max_frames < 0) throw InputError("", "--max-frames must be >= 0");
   if (flags.max_frames > 0) options.config.run.max_frames = flags.max_frames;
   options.max_frames = options.config.run.max_frames;
@@ -70,22 +78,34 @@ int runCommand(const RunFlags& flags) {
 
 void registerRun(CLI::App& root, Action& chosen) {
   auto flags = std::make_shared<RunFlags>();
-  auto* sub = root.add_subcommand("run", "Track a TUM-layout RGB-D sequence; write trajectory, keyframes, stats");
-  sub->add_option("SEQ_DIR", flags->sequence_dir, "sequence folder (rgb.txt, depth.txt, rgb/, depth/)")
+  auto* sub = root.add_subcommand(
+      "run", "Track a TUM-layout RGB-D sequence; write trajectory, keyframes, stats");
+  sub->add_option("SEQ_DIR", flags->sequence_dir,
+                  "sequence folder (rgb.txt, depth.txt, rgb/, depth/)")
       ->required();
   sub->add_option("--out", flags->out_dir, "output folder")->required();
   sub->add_option("--config", flags->config_path, "YAML config (unknown keys are errors)");
-  sub->add_option("--dynamic", flags->dynamic, "on|off: handle moving objects (off = plain SLAM baseline)")
+  sub->add_option("--dynamic", flags->dynamic,
+                  "on|off: handle moving objects (off = plain SLAM baseline)")
       ->check(CLI::IsMember({"on", "off"}));
-  sub->add_option("--segmenter", flags->segmenter, "auto|dnn|hog|masks|none: how people and objects are found")
+  sub->add_option("--segmenter", flags->segmenter,
+                  "auto|dnn|hog|masks|none: how people and objects are found")
       ->check(CLI::IsMember({"auto", "dnn", "hog", "masks", "none"}));
-  sub->add_option("--models", flags->models, "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
-  sub->add_option("--segment-every", flags->segment_every, "segment every k-th frame, propagate masks between");
+  sub->add_option("--models", flags->models,
+                  "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
+  sub->add_option("--segment-every", flags->segment_every,
+                  "segment every k-th frame, propagate masks between");
   sub->add_flag("--deterministic", flags->deterministic,
                 "single thread, local mapping inline: identical results run to run (default)");
-  sub->add_flag("--realtime", flags->realtime, "local mapping in its own thread beside tracking");
+  sub->add_flag("--realtime", flags->realtime,
+                "real time: frames at the camera's pace (dropped when behind), segmentation, local "
+                "mapping and loop "
+                "closing in their own threads");
+  sub->add_flag("--unpaced", flags->unpaced,
+                "with --realtime: frames as fast as they are processed, none dropped");
   sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)");
-  sub->add_option("--blackout", flags->blackout, "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
+  sub->add_option("--blackout", flags->blackout,
+                  "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");
   sub->callback([&chosen, flags] { chosen = [flags] { return runCommand(*flags); }; });
 }

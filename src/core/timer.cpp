@@ -5,6 +5,8 @@
 #include <fstream>
 #include <numeric>
 
+#include <time.h>
+
 namespace dynanav {
 
 TimingSummary summarize(std::vector<double> samples_ms) {
@@ -20,15 +22,22 @@ TimingSummary summarize(std::vector<double> samples_ms) {
   return s;
 }
 
-void StageTimers::add(const std::string& stage, double ms) {
+void StageTimers::add(const std::string& stage, double ms, double cpu_ms) {
   std::lock_guard lock(mutex_);
   samples_ms_[stage].push_back(ms);
+  if (cpu_ms >= 0.0) {
+    auto& [sum, count] = cpu_ms_[stage];
+    sum += cpu_ms;
+    ++count;
+  }
 }
 
 std::map<std::string, TimingSummary> StageTimers::summary() const {
   std::lock_guard lock(mutex_);
   std::map<std::string, TimingSummary> out;
   for (const auto& [stage, samples] : samples_ms_) out[stage] = summarize(samples);
+  for (const auto& [stage, cpu] : cpu_ms_)
+    out[stage].cpu_mean_ms = cpu.second ? cpu.first / double(cpu.second) : 0.0;
   return out;
 }
 
@@ -41,10 +50,16 @@ std::vector<double> StageTimers::samples(const std::string& stage) const {
 double ScopedTimer::stop() {
   const double ms = msSince(start_);
   if (!stopped_) {
-    timers_->add(stage_, ms);
+    timers_->add(stage_, ms, threadCpuMs() - cpu_start_ms_);
     stopped_ = true;
   }
   return ms;
+}
+
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 double peakRssMb() {

@@ -29,7 +29,8 @@ float medianDepth(const cv::Mat& depth_m, const cv::Mat& mask) {
 }
 
 /// Pixels of `box` whose depth lies within `band_m` of `centre_m`, set to 255 in `out`.
-void markBoxDepthBand(const cv::Mat& depth_m, const cv::Rect& box, float centre_m, float band_m, cv::Mat& out) {
+void markBoxDepthBand(const cv::Mat& depth_m, const cv::Rect& box, float centre_m, float band_m,
+                      cv::Mat& out) {
   const cv::Rect r = box & cv::Rect(0, 0, depth_m.cols, depth_m.rows);
   for (int y = r.y; y < r.y + r.height; ++y) {
     const float* d = depth_m.ptr<float>(y);
@@ -40,11 +41,13 @@ void markBoxDepthBand(const cv::Mat& depth_m, const cv::Rect& box, float centre_
 }
 }  // namespace
 
-cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config, const cv::Mat& depth_m) {
+cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& config,
+                             const cv::Mat& depth_m) {
   if (instances.labels.empty()) return {};
   cv::Mat prior = cv::Mat::zeros(instances.labels.size(), CV_8U);
   bool any = false;
-  const bool use_depth = !depth_m.empty() && depth_m.size() == prior.size() && config.prior_box_depth_band_m > 0;
+  const bool use_depth =
+      !depth_m.empty() && depth_m.size() == prior.size() && config.prior_box_depth_band_m > 0;
   for (const Instance& instance : instances.items) {
     if (!isPriorDynamic(instance, config)) continue;
     const cv::Mat mask = instances.labels == instance.id;
@@ -53,12 +56,14 @@ cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& c
     if (!use_depth) continue;
     const float centre_m = medianDepth(depth_m, mask);
     if (centre_m > 0.f)
-      markBoxDepthBand(depth_m, instance.box, centre_m, static_cast<float>(config.prior_box_depth_band_m), prior);
+      markBoxDepthBand(depth_m, instance.box, centre_m,
+                       static_cast<float>(config.prior_box_depth_band_m), prior);
   }
   if (!any) return {};
   if (config.prior_mask_dilate_px > 0) {
     const int r = config.prior_mask_dilate_px;
-    cv::dilate(prior, prior, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
+    cv::dilate(prior, prior,
+               cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
   }
   cv::Mat allowed;
   cv::bitwise_not(prior, allowed);
@@ -77,56 +82,42 @@ void labelKeypoints(Features& features, const cv::Mat& labels) {
   }
 }
 
-MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
-                                 const std::vector<uint16_t>& known_moving) {
-  Features& f = frame.features;
+MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
+                             const DynamicsConfig& config,
+                             const std::vector<uint16_t>& known_moving) {
+  const Features& f = frame.features;
   std::vector<DepthCheck> checks(f.keypoints.size());
   for (int i = 0; i < frame.size(); ++i) {
     checks[i].instance = f.instance_id[i];
     checks[i].measured_depth_m = f.depth_m[i];
-    const MapPointPtr& point = frame.map_points[i];
-    if (!point || frame.outlier[i] || point->bad) continue;
-    const Vec3 p_camera = frame.T_camera_world * point->p_world;
-    checks[i].predicted_depth_m = static_cast<float>(p_camera.z());
+    checks[i].predicted_depth_m = predicted_depth_m[i];
   }
   const DepthDifferenceResult result = classifyByDepthDifference(checks, config);
-  MoverRejection out;
+  MoverVerdict out;
   out.checked = result.checked;
   for (const auto& [id, vote] : result.instances)
     if (vote.dynamic) out.moving_instances.push_back(id);
   for (uint16_t id : known_moving)
-    if (std::find(out.moving_instances.begin(), out.moving_instances.end(), id) == out.moving_instances.end())
+    if (std::find(out.moving_instances.begin(), out.moving_instances.end(), id) ==
+        out.moving_instances.end())
       out.moving_instances.push_back(id);
   std::sort(out.moving_instances.begin(), out.moving_instances.end());
   // DynaSLAM's asymmetry: a keypoint nearer than its map point may just occlude it, but one
   // measured deeper means the point is no longer there -- it lay on something that moved.
   if (config.cull_vanished_points) {
-    for (int i = 0; i < frame.size(); ++i) {
-      const MapPointPtr& point = frame.map_points[i];
-      if (!point || point->bad || point->numObservations() < 1 || !result.keypoint_dynamic[i]) continue;
-      if (checks[i].measured_depth_m > checks[i].predicted_depth_m) {
-        point->setBad();
-        ++out.culled;
-      }
-    }
+    for (int i = 0; i < frame.size(); ++i)
+      if (frame.map_points[i] && result.keypoint_dynamic[i] &&
+          checks[i].measured_depth_m > checks[i].predicted_depth_m)
+        out.drop.cull_vanished.push_back(i);
   }
   for (int i = 0; i < frame.size(); ++i) {
-    const bool in_moving = f.instance_id[i] != 0 &&
-                           std::binary_search(out.moving_instances.begin(), out.moving_instances.end(), f.instance_id[i]);
-    if (!result.keypoint_dynamic[i] && !in_moving) continue;
-    if (!f.usable[i]) continue;
+    const bool in_moving =
+        f.instance_id[i] != 0 && std::binary_search(out.moving_instances.begin(),
+                                                    out.moving_instances.end(), f.instance_id[i]);
+    if ((!result.keypoint_dynamic[i] && !in_moving) || !f.usable[i]) continue;
+    out.drop.drop.push_back(i);
     // A point mapped on an object while it stood still is no longer where the map says.
-    if (in_moving && config.cull_moving_object_points) {
-      const MapPointPtr& point = frame.map_points[i];
-      if (point && !point->bad && point->numObservations() > 0) {
-        point->setBad();
-        ++out.culled;
-      }
-    }
-    f.usable[i] = 0;
-    frame.map_points[i].reset();
-    frame.outlier[i] = 0;
-    ++out.rejected;
+    out.drop.cull_on_drop.push_back(in_moving && config.cull_moving_object_points);
   }
   return out;
 }

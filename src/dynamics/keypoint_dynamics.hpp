@@ -5,8 +5,8 @@
 //    keypoints never reach the initial pose, the local map or a keyframe;
 //  - after the initial pose, every keypoint matched to a map point takes DynaSLAM's
 //    depth-difference test with the paper's instance vote (depth_difference.hpp); keypoints
-//    judged dynamic lose their match and their `usable` flag, so local-map tracking, keyframes
-//    and new map points skip them.
+//    judged dynamic are handed back to slam to drop (match and `usable` flag cleared), so
+//    local-map tracking, keyframes and new map points skip them.
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -14,6 +14,7 @@
 #include "core/config/dynamics.hpp"
 #include "perception/instances.hpp"
 #include "slam/frame.hpp"
+#include "slam/keypoint_drop.hpp"
 
 namespace dynanav {
 
@@ -31,20 +32,21 @@ cv::Mat staticExtractionMask(const Instances& instances, const DynamicsConfig& c
 /// Sets features.instance_id from the label image at each keypoint's (distorted) pixel.
 void labelKeypoints(Features& features, const cv::Mat& labels);
 
-struct MoverRejection {
-  int checked = 0;                       ///< keypoints with a map point and depth
-  int rejected = 0;                      ///< keypoints made unusable
-  int culled = 0;                        ///< map points removed (on a moving object, or vanished)
+struct MoverVerdict {
+  int checked = 0;                         ///< keypoints with a map point and depth
   std::vector<uint16_t> moving_instances;  ///< instances voted dynamic (ascending id)
+  KeypointDrop drop;  ///< what slam is to drop and cull (SlamSystem::applyDrop)
 };
 
-/// The depth-difference test on `frame` at its current pose estimate: predicted depth = depth
-/// of the matched map point in the camera, measured = sensor depth at the keypoint. Dynamic
-/// keypoints (own failure, or in an instance voted dynamic) lose their map point, outlier flag
-/// and usable flag. Instances in `known_moving` are treated as voted dynamic (a mover stays a
+/// The depth-difference test on `frame` at its initial pose: `predicted_depth_m` = depth of each
+/// keypoint's matched map point in the camera (0 = none; SlamSystem::predictedDepths), measured =
+/// sensor depth at the keypoint. Dynamic keypoints (own failure, or in an instance voted dynamic)
+/// are to be dropped. Instances in `known_moving` are treated as voted dynamic (a mover stays a
 /// mover for the frames where too few of its points are matched to vote). Map points measured
-/// deeper than predicted are set bad when config.cull_vanished_points (needs the map lock).
-MoverRejection rejectDepthMovers(Frame& frame, const DynamicsConfig& config,
-                                 const std::vector<uint16_t>& known_moving = {});
+/// deeper than predicted are to be culled when config.cull_vanished_points; those of keypoints on
+/// a moving instance when config.cull_moving_object_points. Reads the frame only.
+MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
+                             const DynamicsConfig& config,
+                             const std::vector<uint16_t>& known_moving = {});
 
 }  // namespace dynanav

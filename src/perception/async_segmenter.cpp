@@ -2,8 +2,9 @@
 
 namespace dynanav {
 
-AsyncSegmenter::AsyncSegmenter(std::unique_ptr<Segmenter> inner, const PerceptionConfig& config)
-    : inner_(std::move(inner)), propagator_(config), worker_([this] { work(); }) {}
+AsyncSegmenter::AsyncSegmenter(std::unique_ptr<Segmenter> inner, const PerceptionConfig& config,
+                               StageTimers* timers)
+    : inner_(std::move(inner)), timers_(timers), propagator_(config), worker_([this] { work(); }) {}
 
 AsyncSegmenter::~AsyncSegmenter() {
   {
@@ -32,7 +33,12 @@ void AsyncSegmenter::work() {
     Result result{frame, {}};
     std::exception_ptr error;
     try {
+      std::optional<ScopedTimer> timer;
+      if (timers_) timer.emplace(*timers_, "segmenter_thread");
       result.instances = inner_->segment(frame);
+      if (timers_)
+        for (const auto& [step, ms] : inner_->lastTiming())
+          timers_->add("segmenter_thread." + step, ms);
     } catch (...) {
       error = std::current_exception();
     }
@@ -60,6 +66,7 @@ Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
     pending_ = std::move(copy);
   }
   wake_.notify_one();
+  timing_.clear();
   if (result) {
     if (result->frame.index == frame.index) {
       propagator_.setReference(frame, result->instances);
@@ -68,7 +75,10 @@ Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
     propagator_.setReference(result->frame, result->instances);
   }
   if (!propagator_.hasReference()) return Instances::none(frame.bgr.size());
-  return propagator_.propagate(frame);
+  Instances carried = propagator_.propagate(frame);
+  const PropagationTiming& t = propagator_.lastTiming();
+  timing_ = {{"propagation", t.flow_ms + t.warp_ms + t.depth_ms}, {"propagation_flow", t.flow_ms}};
+  return carried;
 }
 
 }  // namespace dynanav

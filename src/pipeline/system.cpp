@@ -1,146 +1,154 @@
 #include "pipeline/system.hpp"
 
-#include <opencv2/imgproc.hpp>
-#include <spdlog/spdlog.h>
+#include <algorithm>
+#include <optional>
 
-#include "core/error.hpp"
-#include "dynamics/dynamic_filter.hpp"
-
+#include "dynamics/keypoint_dynamics.hpp"
+#include "dynamics/prior_verifier.hpp"
+#include "perception/async_segmenter.hpp"
 #include "slam/frame.hpp"
-#include "slam/loop_closer.hpp"
-#include "slam/loop_places.hpp"
-#include "slam/relocaliser.hpp"
-#include "slam/map.hpp"
-#include "slam/mapping_stage.hpp"
-#include "slam/orb_extractor.hpp"
-#include "slam/tracker.hpp"
-#include "slam/vocabulary/vocabulary.hpp"
-#include "slam/vocabulary/vocabulary_path.hpp"
+#include "slam/slam_system.hpp"
 
 namespace dynanav {
 
-System::System(const Config& config, const PinholeCamera& camera, const std::filesystem::path& sequence_dir)
-    : config_(config),
-      camera_(std::make_shared<const PinholeCamera>(camera)),
-      scales_(std::make_shared<const PyramidScales>(PyramidScales::fromConfig(config.orb))),
-      extractor_(std::make_unique<OrbExtractor>(config.orb)),
-      map_(std::make_unique<Map>()),
-      mapping_(std::make_unique<MappingStage>(*map_, config.mapping, !config.run.deterministic, &timers_)),
-      tracker_(std::make_unique<Tracker>(*map_, *mapping_, config.tracking)) {
-  dynamics_ = std::make_unique<DynamicFilter>(config_, sequence_dir, &timers_);
-  tracker_->setMoverFilter([this](Frame& frame) { dynamics_->rejectMovers(frame); });  // step 5
-  setUpPlaceRecognition();
+System::System(const Config& config, const PinholeCamera& camera,
+               const std::filesystem::path& sequence_dir)
+    : config_(config), camera_(camera), dynamic_(config.run.dynamic) {
+  if (dynamic_) {
+    SegmenterRequest request;
+    request.name = config.run.segmenter;
+    request.segment_every = std::max(1, config.run.segment_every);
+    request.sequence_dir = sequence_dir;
+    segmenter_ = makeSegmenter(request, config.perception);
+    // Real time: the segmenter runs in its own thread on the newest frame; its masks are
+    // carried to the current frame by optical flow.
+    if (config.run.realtime && request.name != "none")
+      segmenter_ =
+          std::make_unique<AsyncSegmenter>(std::move(segmenter_), config.perception, &timers_);
+    segmenter_name_ = segmenter_->name();
+    verifier_ = std::make_unique<PriorVerifier>(config.dynamics);
+  }
+  slam_ = std::make_unique<SlamSystem>(config, camera, &timers_);
 }
 
-void System::setUpPlaceRecognition() {
-  const LoopConfig& loop = config_.loop;
-  if (!loop.relocalisation && !loop.loop_closing) return;
-  try {
-    vocabulary_ = std::make_shared<const Vocabulary>(Vocabulary::load(findVocabulary(loop.vocabulary).string()));
-  } catch (const InputError& e) {
-    spdlog::warn("relocalisation and loop closing disabled: {}", e.what());
-    return;
-  }
-  places_ = std::make_unique<PlaceIndex>(vocabulary_, loop);
-  // The loop closer also feeds the keyframe database, which relocalisation needs on its own.
-  loop_closer_ = std::make_unique<LoopCloser>(*map_, *places_, loop, config_.mapping.covisibility_min_weight,
-                                              !config_.run.deterministic);
-  mapping_->setKeyFrameSink([this](const KeyFramePtr& kf) { loop_closer_->process(kf); });
-  if (loop.relocalisation) {
-    relocaliser_ = std::make_unique<Relocaliser>(*places_, loop, config_.tracking);
-    tracker_->setRelocaliser(relocaliser_.get());
-  }
-}
-
-System::~System() { finish(); }
-
-FrameResult System::process(const RgbdFrame& input) {
-  ScopedTimer latency(timers_, "frame");
-  const Instances instances = dynamics_->segment(input);  // 2. segment (or propagate masks)
-  Frame frame = extractFeatures(input, dynamics_->extractionMask(instances));  // 3. ORB off prior movers
-  dynamics_->labelKeypoints(frame, instances);
-  TrackOutcome outcome;
-  {
-    ScopedTimer timer(timers_, "tracking");
-    outcome = tracker_->track(frame);  // 4-6. initial pose, depth test (mover filter), local map
-  }
-  dynamics_->verifyPriors(input, instances, frame, outcome.state == TrackingState::kOk);  // 7. scene flow
-  mapping_->runPending();                             // 10. local mapping (inline when deterministic)
-  if (outcome.state == TrackingState::kOk && outcome.reference)
-    anchors_.push_back({input.stamp_s, outcome.reference, frame.T_camera_world * outcome.reference->T_world_camera()});
-  FrameResult result = makeResult(input, frame, outcome);
-  result.latency_ms = latency.stop();
-  return result;                                      // 11. writers consume the result
+System::~System() {
+  finish();
 }
 
 void System::finish() {
-  if (mapping_) mapping_->finish();
-  if (loop_closer_) loop_closer_->finish();  // joins a running global BA
+  slam_->finish();
 }
 
-Frame System::extractFeatures(const RgbdFrame& input, const cv::Mat& allowed) {
-  ScopedTimer timer(timers_, "extraction");
-  cv::Mat gray;
-  if (input.bgr.channels() == 3) cv::cvtColor(input.bgr, gray, cv::COLOR_BGR2GRAY);
-  else gray = input.bgr;
-  std::vector<cv::KeyPoint> keypoints;
-  cv::Mat descriptors;
-  extractor_->extract(gray, allowed, keypoints, descriptors);
-  return Frame(next_frame_id_++, input.stamp_s,
-               makeFeatures(std::move(keypoints), descriptors, input.depth_m,
-                            config_.tracking.depth_max_m, camera_, scales_));
-}
-
-FrameResult System::makeResult(const RgbdFrame& input, const Frame& frame, const TrackOutcome& outcome) const {
-  FrameResult r;
-  r.index = input.index;
-  r.stamp_s = input.stamp_s;
-  r.state = outcome.state;
-  r.tracked = outcome.state == TrackingState::kOk;
-  r.T_world_camera = frame.T_camera_world.inverse();
-  r.keyframe = outcome.new_keyframe != nullptr;
-  r.recovered = outcome.recovered;
-  r.keypoints = frame.size();
-  r.inliers = outcome.inliers;
-  r.map_points = numMapPoints();
-  r.map_keyframes = numKeyFrames();
-  return r;
-}
-
-std::vector<StampedPose> System::keyframePoses() const {
-  std::unique_lock lock(map_->mutex());
-  std::vector<StampedPose> poses;
-  for (const auto& [id, kf] : map_->keyframes()) {
-    if (!kf->bad) poses.push_back({kf->stamp_s, kf->T_world_camera()});
+FrameResult System::process(const RgbdFrame& input) {
+  ScopedTimer processing(timers_, "frame");
+  FrameResult result;
+  const PreparedFrame prep = prepareFrame(input, dynamic_);  // 1. grey images, once
+  result.instances = segment(input);                         // 2. segment (or propagate)
+  const cv::Mat allowed = extractionMask(input, result);     // 3. ORB off prior and known movers
+  Frame frame = extractFeatures(prep, input, allowed, result.instances);
+  TrackOutcome outcome;
+  {
+    ScopedTimer timer(timers_, "tracking");
+    InitialPose initial = slam_->initialPose(frame);            // 4. initial pose
+    if (initial.ok) rejectMovers(frame, *result.dynamics);      // 5. non-prior movers dropped
+    outcome = slam_->trackLocalMap(frame, std::move(initial));  // 6. local map, static points
   }
-  return poses;
+  verifyPriors(prep, input, frame, outcome, result);  // 7. scene flow: moving or not
+  // 8. object tracking and 9. feedback fill result.objects and result.events (issues 13, 14).
+  slam_->finishFrame(frame, outcome);  // 10. local mapping, anchors
+  fillResult(frame, outcome, result);
+  result.index = input.index;
+  result.stamp_s = input.stamp_s;
+  result.latency_ms = processing.stop();
+  return result;  // 11. sinks consume it
 }
 
-std::vector<LoopEvent> System::loops() const {
-  return loop_closer_ ? loop_closer_->loops() : std::vector<LoopEvent>{};
+Instances System::segment(const RgbdFrame& input) {
+  if (!dynamic_) return Instances::none(input.bgr.size());
+  ScopedTimer timer(timers_, "segmentation");
+  Instances instances = segmenter_->segment(input);
+  for (const auto& [step, ms] : segmenter_->lastTiming()) timers_.add("segmentation." + step, ms);
+  return instances;
 }
 
-nlohmann::json System::dynamicsSummary() const { return dynamics_->summary(); }
-
-std::vector<StampedPose> System::refinedTrajectory() const {
-  std::unique_lock lock(map_->mutex());
-  std::vector<StampedPose> poses;
-  poses.reserve(anchors_.size());
-  for (const auto& a : anchors_)
-    poses.push_back({a.stamp_s, anchoredPose(*a.reference, a.T_frame_reference).inverse()});
-  return poses;
+cv::Mat System::extractionMask(const RgbdFrame& input, FrameResult& result) {
+  if (!dynamic_) return {};
+  FrameDynamics& record = result.dynamics.emplace();
+  for (const Instance& instance : result.instances.items)
+    record.prior_instances += isPriorDynamic(instance, config_.dynamics) ? 1 : 0;
+  cv::Mat allowed = staticExtractionMask(result.instances, config_.dynamics, input.depth_m);
+  // A non-prior object found moving in the last frame is still moving now: cut it out before
+  // its keypoints reach the pose or the map.
+  record.moving_ids =
+      cutOutMovingObjects(allowed, result.instances, verifier_->movingMask(), config_.dynamics);
+  record.moving_instances = static_cast<int>(record.moving_ids.size());
+  if (!allowed.empty())
+    record.masked_share = 1.0 - double(cv::countNonZero(allowed)) / double(allowed.total());
+  return allowed;
 }
 
-LocalMapperStats System::mappingStats() const { return mapping_->stats(); }
-
-size_t System::numMapPoints() const {
-  std::unique_lock lock(map_->mutex());
-  return map_->numPoints();
+Frame System::extractFeatures(const PreparedFrame& prep, const RgbdFrame& input,
+                              const cv::Mat& allowed, const Instances& instances) {
+  ScopedTimer timer(timers_, "extraction");
+  Frame frame = slam_->extract(prep.grey, input.depth_m, input.stamp_s, allowed);
+  if (dynamic_) labelKeypoints(frame.features, instances.labels);
+  return frame;
 }
 
-size_t System::numKeyFrames() const {
-  std::unique_lock lock(map_->mutex());
-  return map_->numKeyFrames();
+void System::rejectMovers(Frame& frame, FrameDynamics& record) {
+  depth_voted_.clear();
+  if (!dynamic_) return;
+  const MoverVerdict verdict =
+      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics);
+  record.culled_points += slam_->applyDrop(frame, verdict.drop);
+  record.dynamic_keypoints += static_cast<int>(verdict.drop.drop.size());
+  record.moving_instances += static_cast<int>(verdict.moving_instances.size());
+  record.moving_ids.insert(record.moving_ids.end(), verdict.moving_instances.begin(),
+                           verdict.moving_instances.end());
+  depth_voted_ = verdict.moving_instances;
+}
+
+void System::verifyPriors(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
+                          const TrackOutcome& outcome, FrameResult& result) {
+  if (!dynamic_) return;
+  FrameDynamics& record = *result.dynamics;
+  record.keypoints = frame.size();
+  for (int i = 0; i < frame.size(); ++i)
+    record.static_keypoints += frame.features.usable[i] ? 1 : 0;
+  ScopedTimer timer(timers_, "scene_flow");
+  const bool tracked = outcome.state == TrackingState::kOk;
+  const PriorVerdicts verdicts = verifier_->verify(
+      {prep.grey_half, input.depth_m, result.instances, frame.T_camera_world, tracked, camera_},
+      depth_voted_);
+  depth_voted_.clear();
+  record.prior_moving = verdicts.prior_moving;
+  record.prior_static = verdicts.prior_static;
+  record.static_ids = verdicts.static_ids;
+  auto& ids = record.moving_ids;
+  ids.insert(ids.end(), verdicts.moving_ids.begin(), verdicts.moving_ids.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  for (const Instance& instance : result.instances.items) {
+    InstanceVerdict& v = result.verdicts.emplace_back();
+    v.id = instance.id;
+    v.prior_dynamic = isPriorDynamic(instance, config_.dynamics);
+    v.moving = std::binary_search(ids.begin(), ids.end(), instance.id);
+    v.verified_static =
+        std::binary_search(record.static_ids.begin(), record.static_ids.end(), instance.id);
+  }
+}
+
+void System::fillResult(const Frame& frame, const TrackOutcome& outcome,
+                        FrameResult& result) const {
+  result.state = outcome.state;
+  result.tracked = outcome.state == TrackingState::kOk;
+  result.T_world_camera = frame.T_camera_world.inverse();
+  result.keyframe = outcome.new_keyframe != nullptr;
+  result.recovered = outcome.recovered;
+  result.keypoints = frame.size();
+  result.inliers = outcome.inliers;
+  result.map_points = slam_->numMapPoints();
+  result.map_keyframes = slam_->numKeyFrames();
 }
 
 }  // namespace dynanav

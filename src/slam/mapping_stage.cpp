@@ -2,17 +2,22 @@
 
 namespace dynanav {
 
-MappingStage::MappingStage(Map& map, const MappingConfig& config, bool threaded, StageTimers* timers)
-    : mapper_(map, config, timers), threaded_(threaded),
+MappingStage::MappingStage(Map& map, const MappingConfig& config, bool threaded,
+                           StageTimers* timers)
+    : mapper_(map, config, timers),
+      threaded_(threaded),
       capacity_(static_cast<size_t>(std::max(1, config.queue_capacity))) {
   if (threaded_) worker_ = std::thread([this] { workerLoop(); });
 }
 
-MappingStage::~MappingStage() { finish(); }
+MappingStage::~MappingStage() {
+  finish();
+}
 
 void MappingStage::insert(KeyFramePtr keyframe) {
   std::unique_lock lock(queue_mutex_);
-  if (threaded_) queue_changed_.wait(lock, [this] { return queue_.size() < capacity_ || stopping_; });
+  if (threaded_)
+    queue_changed_.wait(lock, [this] { return queue_.size() < capacity_ || stopping_; });
   queue_.push_back(std::move(keyframe));
   queue_changed_.notify_all();
 }
@@ -39,10 +44,13 @@ bool MappingStage::accepts() const {
 
 void MappingStage::finish() {
   drain();
-  if (!final_done_) {
-    final_done_ = true;
-    mapper_.finalBundleAdjustment();
-  }
+  finalBundleAdjustment();
+}
+
+void MappingStage::finalBundleAdjustment() {
+  if (final_done_) return;
+  final_done_ = true;
+  mapper_.finalBundleAdjustment();
 }
 
 void MappingStage::drain() {

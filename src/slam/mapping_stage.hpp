@@ -30,8 +30,13 @@ class MappingStage {
   /// The queue has room for another keyframe.
   [[nodiscard]] bool accepts() const;
   /// Processes everything still queued, stops the worker and runs the final whole-map bundle
-  /// adjustment (idempotent).
+  /// adjustment (idempotent): stop() then finalBundleAdjustment().
   void finish();
+  /// Processes everything still queued and stops the worker (idempotent); nothing is inserted
+  /// after.
+  void stop() { drain(); }
+  /// The whole-map bundle adjustment that ends a run (once; call after stop()).
+  void finalBundleAdjustment();
   /// Counters of the local mapper (read after finish() in threaded mode).
   [[nodiscard]] LocalMapperStats stats() const { return mapper_.stats(); }
   /// Issue 4: called with each keyframe once local mapping is done with it (loop closing), on the

@@ -12,18 +12,6 @@
 
 namespace dynanav {
 
-const char* toString(TrackingState state) {
-  switch (state) {
-    case TrackingState::kNotInitialised:
-      return "not_initialised";
-    case TrackingState::kOk:
-      return "ok";
-    case TrackingState::kLost:
-      return "lost";
-  }
-  return "?";
-}
-
 bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
   const Features& f = frame.features;
   int with_depth = 0;
@@ -106,9 +94,17 @@ void Tracker::rememberAsLast(const Frame& frame) {
 }
 
 TrackOutcome Tracker::track(Frame& frame) {
+  InitialPose initial = initialPose(frame);
+  if (initial.finished) return initial.outcome;
+  return trackLocalMap(frame, std::move(initial));
+}
+
+InitialPose Tracker::initialPose(Frame& frame) {
   std::unique_lock lock(map_.mutex());
-  TrackOutcome outcome;
+  InitialPose initial;
   if (state_ == TrackingState::kNotInitialised) {
+    initial.finished = true;
+    TrackOutcome& outcome = initial.outcome;
     if (initialise(frame, outcome)) {
       state_ = TrackingState::kOk;
       last_is_keyframe_ = true;
@@ -117,24 +113,23 @@ TrackOutcome Tracker::track(Frame& frame) {
       mapping_.insert(outcome.new_keyframe);
     }
     outcome.state = state_;
-    return outcome;
+    return initial;
   }
   if (reference_->bad) {  // culled by local mapping: fall back to the newest keyframe
     reference_ = map_.keyframes().rbegin()->second;
   }
-  const bool was_lost = state_ == TrackingState::kLost;
+  initial.was_lost = state_ == TrackingState::kLost;
   bool ok = false;
-  const double readout_s = config_.rolling_shutter_readout_ms >= 0.0
-                               ? config_.rolling_shutter_readout_ms * 1e-3
-                               : frame.features.camera->readout_s;
-  const bool retime = !was_lost && has_velocity_ && readout_s > 0.0;
-  KeypointMeasurements as_read;
-  if (retime) {
-    as_read = KeypointMeasurements::of(frame.features);
+  initial.readout_s = config_.rolling_shutter_readout_ms >= 0.0
+                          ? config_.rolling_shutter_readout_ms * 1e-3
+                          : frame.features.camera->readout_s;
+  initial.retime = !initial.was_lost && has_velocity_ && initial.readout_s > 0.0;
+  if (initial.retime) {
+    initial.as_read = KeypointMeasurements::of(frame.features);
     compensateRollingShutter(frame.features, CameraVelocity::of(velocity_, velocity_interval_s_),
-                             readout_s);
+                             initial.readout_s);
   }
-  if (!was_lost) {
+  if (!initial.was_lost) {
     updateLastFrame();
     if (has_velocity_) ok = trackWithMotionModel(frame, last_, velocity_, config_);
     if (!ok) ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
@@ -145,9 +140,18 @@ TrackOutcome Tracker::track(Frame& frame) {
   spdlog::debug("frame {}: initial pose {} ({} matches)", frame.id, ok ? "ok" : "failed",
                 std::count_if(frame.map_points.begin(), frame.map_points.end(),
                               [](const auto& p) { return p != nullptr; }));
-  if (ok && mover_filter_) mover_filter_(frame);  // issue 7: movers leave before the local map
+  initial.ok = ok;
+  return initial;
+}
+
+TrackOutcome Tracker::trackLocalMap(Frame& frame, InitialPose initial) {
+  if (initial.finished) return initial.outcome;
+  std::unique_lock lock(map_.mutex());
+  TrackOutcome outcome;
+  const bool was_lost = initial.was_lost;
+  bool ok = initial.ok;
   if (ok) {
-    outcome.inliers = trackLocalMap(frame, map_.keyframes(), config_, local_);
+    outcome.inliers = dynanav::trackLocalMap(frame, map_.keyframes(), config_, local_);
     spdlog::debug("frame {}: local map {} kfs {} points -> {} inliers", frame.id,
                   local_.keyframes.size(), local_.points.size(), outcome.inliers);
     // After a loss ORB-SLAM2 asks for more support before trusting the pose again.
@@ -161,7 +165,8 @@ TrackOutcome Tracker::track(Frame& frame) {
     outcome.state = state_;
     return outcome;
   }
-  if (retime) outcome.inliers = retimeWithOwnMotion(frame, as_read, readout_s);
+  if (initial.retime)
+    outcome.inliers = retimeWithOwnMotion(frame, initial.as_read, initial.readout_s);
   state_ = TrackingState::kOk;
   outcome.recovered = was_lost;
   if (!was_lost) {

@@ -5,9 +5,9 @@
 // local mapping. Loss is a state: lost frames are reported, and each later frame tries to
 // recover against the last reference keyframe (full relocalisation is a later issue).
 #include <cstdint>
-#include <functional>
 
 #include "core/config/tracking.hpp"
+#include "core/tracking_state.hpp"
 #include "slam/frame.hpp"
 #include "slam/local_map.hpp"
 #include "slam/map.hpp"
@@ -17,9 +17,6 @@
 
 namespace dynanav {
 
-enum class TrackingState { kNotInitialised, kOk, kLost };
-const char* toString(TrackingState state);
-
 struct TrackOutcome {
   TrackingState state = TrackingState::kNotInitialised;
   KeyFramePtr new_keyframe;  ///< set when this frame became a keyframe
@@ -28,22 +25,36 @@ struct TrackOutcome {
   KeyFramePtr reference;     ///< reference keyframe of a tracked frame (for final pose refinement)
 };
 
+/// What the first tracking phase (initial pose) hands to the second (local map) for one frame.
+struct InitialPose {
+  bool ok = false;  ///< the frame has an initial pose: movers may be found, then the local map
+  bool finished = false;  ///< nothing left to do: the map was initialised here, or could not be
+  bool was_lost = false;
+  bool retime = false;  ///< keypoints were re-timed for the rolling shutter with the prediction
+  double readout_s = 0.0;
+  KeypointMeasurements as_read;  ///< the keypoints before re-timing (to re-time with own motion)
+  TrackOutcome outcome;          ///< the result when `finished`
+};
+
 class Tracker {
  public:
   Tracker(Map& map, MappingStage& mapping, const TrackingConfig& config)
       : map_(map), mapping_(mapping), config_(config) {}
 
-  /// Tracks one frame (its features set, id increasing). Holds the map lock while it runs.
+  /// Tracks one frame (its features set, id increasing): initialPose() then trackLocalMap().
   TrackOutcome track(Frame& frame);
+  /// Phase 1: initialises the map from the first usable frame, or finds an initial pose by the
+  /// motion model, the reference keyframe or relocalisation. Takes the map lock.
+  InitialPose initialPose(Frame& frame);
+  /// Phase 2 (after movers have been dropped from the frame): local-map tracking, rolling-shutter
+  /// re-timing with the frame's own motion, the keyframe decision. Takes the map lock.
+  TrackOutcome trackLocalMap(Frame& frame, InitialPose initial);
 
   [[nodiscard]] TrackingState state() const { return state_; }
   /// Issue 4: when lost, relocalise against the whole map by place recognition (nullptr: only
   /// retry the last reference keyframe).
   void setRelocaliser(const Relocaliser* relocaliser) { relocaliser_ = relocaliser; }
   [[nodiscard]] const LocalMap& localMap() const { return local_; }
-  /// Issue 7 (dynamics): called on the frame after its initial pose and before local-map
-  /// tracking; it drops matches and clears `usable` on keypoints of moving objects.
-  void setMoverFilter(std::function<void(Frame&)> filter) { mover_filter_ = std::move(filter); }
 
  private:
   bool initialise(Frame& frame, TrackOutcome& outcome);
@@ -53,7 +64,8 @@ class Tracker {
   void rememberAsLast(const Frame& frame);
   /// Re-times the frame's keypoints (from `as_read`) with its own motion since the last frame
   /// and re-optimises its pose; returns the local-map inliers left.
-  int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read, double readout_s) const;
+  int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read,
+                          double readout_s) const;
 
   Map& map_;
   MappingStage& mapping_;
@@ -63,14 +75,13 @@ class Tracker {
   KeyFramePtr last_reference_;
   SE3 T_last_reference_ = SE3::Identity();  ///< last frame pose relative to its reference
   bool last_is_keyframe_ = false;
-  SE3 velocity_ = SE3::Identity();          ///< T_current_last of the last tracked pair
-  double velocity_interval_s_ = 0.0;        ///< time between that pair's frames
+  SE3 velocity_ = SE3::Identity();    ///< T_current_last of the last tracked pair
+  double velocity_interval_s_ = 0.0;  ///< time between that pair's frames
   bool has_velocity_ = false;
   KeyFramePtr reference_;
   LocalMap local_;
   uint64_t last_keyframe_frame_id_ = 0;
   const Relocaliser* relocaliser_ = nullptr;
-  std::function<void(Frame&)> mover_filter_;  // issue 7
 };
 
 }  // namespace dynanav

@@ -28,7 +28,8 @@ Frame frameWith(const std::vector<cv::Point2f>& pixels, const std::vector<float>
   f.instance_id.assign(pixels.size(), 0);
   Frame frame(7, 0.0, f);
   for (size_t i = 0; i < pixels.size(); ++i)
-    if (map_depth_m[i] > 0) frame.map_points[i] = std::make_shared<MapPoint>(i, Vec3(0, 0, map_depth_m[i]), nullptr);
+    if (map_depth_m[i] > 0)
+      frame.map_points[i] = std::make_shared<MapPoint>(i, Vec3(0, 0, map_depth_m[i]), nullptr);
   return frame;
 }
 }  // namespace
@@ -45,10 +46,10 @@ TEST(KeypointDynamics, ExtractionMaskCutsOutDilatedPersonOnly) {
   c.prior_mask_dilate_px = 5;
   const cv::Mat allowed = staticExtractionMask(twoObjects(), c);
   ASSERT_EQ(allowed.type(), CV_8U);
-  EXPECT_EQ(allowed.at<uint8_t>(40, 25), 0);    // inside the person
-  EXPECT_EQ(allowed.at<uint8_t>(40, 43), 0);    // 4 px right of the person: dilated away
-  EXPECT_EQ(allowed.at<uint8_t>(40, 50), 255);  // 11 px right: allowed
-  EXPECT_EQ(allowed.at<uint8_t>(60, 120), 255); // the box is not a prior mover
+  EXPECT_EQ(allowed.at<uint8_t>(40, 25), 0);     // inside the person
+  EXPECT_EQ(allowed.at<uint8_t>(40, 43), 0);     // 4 px right of the person: dilated away
+  EXPECT_EQ(allowed.at<uint8_t>(40, 50), 255);   // 11 px right: allowed
+  EXPECT_EQ(allowed.at<uint8_t>(60, 120), 255);  // the box is not a prior mover
 }
 
 TEST(KeypointDynamics, NoPriorObjectsGivesEmptyMask) {
@@ -57,6 +58,23 @@ TEST(KeypointDynamics, NoPriorObjectsGivesEmptyMask) {
   instances.items.erase(instances.items.begin());
   EXPECT_TRUE(staticExtractionMask(instances, c).empty());
   EXPECT_TRUE(staticExtractionMask(Instances::none({160, 120}), c).empty());
+}
+
+/// Step 5 as the pipeline runs it: mover rejection decides on the frame, slam applies it.
+struct Rejection {
+  int checked = 0;
+  int rejected = 0;
+  int culled = 0;
+  std::vector<uint16_t> moving_instances;
+};
+Rejection rejectDepthMovers(Frame& frame, const DynamicsConfig& c) {
+  const MoverVerdict verdict = findDepthMovers(frame, predictedMapPointDepths(frame), c);
+  Rejection r;
+  r.checked = verdict.checked;
+  r.rejected = static_cast<int>(verdict.drop.drop.size());
+  r.moving_instances = verdict.moving_instances;
+  r.culled = applyKeypointDrop(frame, verdict.drop);
+  return r;
 }
 
 TEST(KeypointDynamics, LabelsFollowKeypointPixels) {
@@ -69,14 +87,14 @@ TEST(KeypointDynamics, MovingBoxIsRejectedWholeStaticPointsKept) {
   DynamicsConfig c;
   // Six box keypoints: four moved 0.4 m closer, one agrees, one has no map point yet.
   // Two background points: one agrees, one is a lone mover outside any mask.
-  std::vector<cv::Point2f> px = {{105, 45}, {110, 50}, {115, 55}, {120, 60}, {125, 65}, {130, 70},
-                                 {70, 100}, {80, 100}};
+  std::vector<cv::Point2f> px = {{105, 45}, {110, 50}, {115, 55}, {120, 60},
+                                 {125, 65}, {130, 70}, {70, 100}, {80, 100}};
   std::vector<float> map_z = {2.0f, 2.0f, 2.0f, 2.0f, 2.0f, 0.f, 3.0f, 3.0f};
   std::vector<float> meas_z = {1.6f, 1.6f, 1.6f, 1.6f, 2.0f, 1.6f, 3.01f, 2.2f};
   Frame frame = frameWith(px, map_z, meas_z);
   labelKeypoints(frame.features, twoObjects().labels);
   c.instance_min_points = 5;
-  const MoverRejection r = rejectDepthMovers(frame, c);
+  const Rejection r = rejectDepthMovers(frame, c);
   EXPECT_EQ(r.checked, 7);
   EXPECT_EQ(r.moving_instances, (std::vector<uint16_t>{2}));
   for (int i = 0; i < 6; ++i) {
@@ -99,13 +117,14 @@ TEST(KeypointDynamics, MapPointsOnAMovingObjectAreCulled) {
   for (const bool cull : {true, false}) {
     Frame frame = frameWith(px, map_z, meas_z);
     labelKeypoints(frame.features, twoObjects().labels);
-    auto kf = std::make_shared<KeyFrame>(0, 0, 0.0, frame.features, SE3::Identity(), frame.map_points);
+    auto kf =
+        std::make_shared<KeyFrame>(0, 0, 0.0, frame.features, SE3::Identity(), frame.map_points);
     std::vector<MapPointPtr> points = frame.map_points;
     for (int i = 0; i < frame.size(); ++i) points[i]->addObservation(kf.get(), i);
     DynamicsConfig c;
     c.instance_min_points = 5;
     c.cull_moving_object_points = cull;
-    const MoverRejection r = rejectDepthMovers(frame, c);
+    const Rejection r = rejectDepthMovers(frame, c);
     ASSERT_EQ(r.moving_instances, (std::vector<uint16_t>{2}));
     EXPECT_EQ(r.culled, cull ? 5 : 0);
     for (int i = 0; i < 5; ++i) EXPECT_EQ(points[i]->bad, cull) << i;
@@ -125,7 +144,7 @@ TEST(KeypointDynamics, StaticSceneLosesNothing) {
   }
   Frame frame = frameWith(px, map_z, meas_z);
   labelKeypoints(frame.features, twoObjects().labels);
-  const MoverRejection r = rejectDepthMovers(frame, c);
+  const Rejection r = rejectDepthMovers(frame, c);
   EXPECT_EQ(r.rejected, 0);
   EXPECT_TRUE(r.moving_instances.empty());
 }

@@ -13,13 +13,23 @@ struct RunConfig {
   std::string segmenter = "auto";
   int segment_every = 1;
   bool realtime = false;
+  bool paced = true;
+  int queue_frames = 2;
   int max_frames = 0;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("dynamic", dynamic, "handle moving objects (false = plain ORB-SLAM2-style baseline)");
     v("deterministic", deterministic, "single thread, identical results run to run");
     v("segmenter", segmenter, "auto | dnn | hog | masks | none");
     v("segment_every", segment_every, "run the segmenter every k-th frame, propagate between");
-    v("realtime", realtime, "local mapping in its own thread beside tracking (--realtime; not bit-reproducible)");
+    v("realtime", realtime,
+      "real-time threads: segmentation, local mapping, loop closing beside tracking (--realtime; "
+      "not bit-reproducible)");
+    v("paced", paced,
+      "real time: frames arrive at their timestamps' pace, as from a camera (false = --unpaced)");
+    v("queue_frames", queue_frames,
+      "real time: frames that may wait for processing; when full the oldest is dropped (paced) or "
+      "the source waits (unpaced)");
     v("max_frames", max_frames, "process at most this many frames (0 = all)");
   }
 };

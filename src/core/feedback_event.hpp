@@ -1,0 +1,23 @@
+#pragma once
+// One message to the wearer (DESIGN.md §2, events.jsonl): made by assist's message policy,
+// carried by FrameResult to the audio stage and the writers.
+#include <cstdint>
+#include <string>
+
+namespace dynanav {
+
+enum class FeedbackPriority { kInfo, kAdvisory, kUrgent };
+
+struct FeedbackEvent {
+  double stamp_s = 0.0;  ///< frame time that raised it
+  FeedbackPriority priority = FeedbackPriority::kInfo;
+  std::string kind;  ///< e.g. "approaching", "nearby", "new_person", "obstacle"
+  std::string text;  ///< the spoken message
+  uint64_t object_id = 0;
+  double bearing_deg = 0.0;
+  double distance_m = 0.0;
+  double ttc_s = -1.0;          ///< time to collision (< 0: none)
+  double audio_start_s = -1.0;  ///< where it starts in the audio stream (< 0: not rendered)
+};
+
+}  // namespace dynanav

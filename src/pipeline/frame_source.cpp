@@ -1,0 +1,62 @@
+#include "pipeline/frame_source.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace dynanav {
+namespace {
+
+RgbdFrame blackFrame(const RgbdFrame& like, const PinholeCamera& camera) {
+  RgbdFrame f = like;
+  const cv::Size size = like.bgr.empty() ? cv::Size(camera.width, camera.height) : like.bgr.size();
+  f.bgr = cv::Mat::zeros(size, CV_8UC3);
+  f.depth_m = cv::Mat::zeros(size, CV_32F);
+  return f;
+}
+
+}  // namespace
+
+SequenceSource::SequenceSource(const SequenceSourceOptions& options)
+    : options_(options),
+      sequence_(TumSequence::open(options.dir, options.io, options.fallback_camera)) {
+  total_ = sequence_.size();
+  if (options.max_frames > 0) total_ = std::min<size_t>(total_, options.max_frames);
+  prefetch();
+}
+
+void SequenceSource::prefetch() {
+  if (position_ >= total_) return;
+  next_ = std::async(std::launch::async, [this, i = position_] { return sequence_.load(i); });
+}
+
+std::optional<RgbdFrame> SequenceSource::next() {
+  while (position_ < total_) {
+    const int index = static_cast<int>(position_);
+    RgbdFrame frame;
+    try {
+      frame = next_.get();
+    } catch (const InputError& e) {
+      ++skipped_;
+      spdlog::warn("frame {} skipped: {}", index, e.what());
+      ++position_;
+      prefetch();
+      continue;
+    }
+    ++position_;
+    prefetch();
+    const auto& blackout = options_.blackout;
+    if (blackout && index >= blackout->first && index <= blackout->second)
+      frame = blackFrame(frame, camera());
+    return frame;
+  }
+  return std::nullopt;
+}
+
+std::string SequenceSource::describe() const {
+  return sequence_.dir().string();
+}
+
+}  // namespace dynanav

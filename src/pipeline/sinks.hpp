@@ -1,0 +1,83 @@
+#pragma once
+// Writers are consumers of FrameResult (DESIGN.md §1, sinks): registered once, each gets every
+// processed frame in order, then the end of the run once the map is final.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "core/frame.hpp"
+#include "io/trajectory.hpp"
+#include "pipeline/frame_result.hpp"
+
+namespace dynanav {
+
+class System;
+
+/// What a whole run did, from the results it produced.
+struct RunSummary {
+  int frames = 0;  ///< processed
+  int tracked = 0;
+  int lost = 0;
+  int skipped = 0;     ///< unreadable frames (the source's count)
+  size_t dropped = 0;  ///< real time: frames dropped because the system was behind
+  bool initialised = false;
+  std::vector<int> relocalisation_frames;  ///< input frames on which tracking came back (issue 4)
+  void add(const FrameResult& result);
+};
+
+/// The end of a run, as sinks see it (after System::finish()).
+struct RunEnd {
+  const System& system;
+  const RunSummary& summary;
+  double wall_s = 0.0;
+  std::string mode;  ///< "deterministic", "realtime" or "realtime-unpaced"
+};
+
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void consume(const RgbdFrame& frame, const FrameResult& result) = 0;
+  virtual void finish(const RunEnd& end) = 0;
+};
+
+/// OUT/trajectory.txt as the run goes (flushed per line, so an interrupted run keeps it); at the
+/// end keyframes.txt, trajectory_online.txt (poses as tracked) and trajectory.txt re-anchored
+/// on the optimised keyframes, as ORB-SLAM2 saves its trajectory.
+class TrajectorySink final : public FrameSink {
+ public:
+  explicit TrajectorySink(std::filesystem::path out_dir);
+  void consume(const RgbdFrame& frame, const FrameResult& result) override;
+  void finish(const RunEnd& end) override;
+
+ private:
+  std::filesystem::path out_dir_;
+  std::unique_ptr<TrajectoryWriter> online_;
+};
+
+/// OUT/stats.json at the end: counts, timings per stage, latency, dynamics per frame.
+class StatsSink final : public FrameSink {
+ public:
+  explicit StatsSink(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {}
+  void consume(const RgbdFrame& frame, const FrameResult& result) override;
+  void finish(const RunEnd& end) override;
+
+ private:
+  std::filesystem::path out_dir_;
+  std::vector<double> latency_ms_;
+  std::vector<FrameDynamics> dynamics_;
+};
+
+/// A progress bar on stderr.
+class ProgressSink final : public FrameSink {
+ public:
+  explicit ProgressSink(size_t expected) : expected_(expected) {}
+  void consume(const RgbdFrame& frame, const FrameResult& result) override;
+  void finish(const RunEnd& end) override;
+
+ private:
+  size_t expected_;
+  size_t done_ = 0;
+  int lost_ = 0;
+};
+
+}  // namespace dynanav

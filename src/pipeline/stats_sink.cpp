@@ -1,0 +1,134 @@
+// StatsSink: stats.json, assembled here from the records the pipeline returned (FrameResult)
+// and the stage timers; no module builds JSON of its own.
+#include <sys/resource.h>
+
+#include "io/json_io.hpp"
+#include "pipeline/sinks.hpp"
+#include "pipeline/system.hpp"
+#include "slam/loop_closer.hpp"
+#include "slam/slam_system.hpp"
+
+namespace dynanav {
+namespace {
+
+/// CPU seconds (user + system, all threads) this process has used: a steadier throughput
+/// measure than wall time on a shared machine.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+nlohmann::json timingJson(const TimingSummary& t) {
+  return {{"mean", t.mean_ms},
+          {"p95", t.p95_ms},
+          {"max", t.max_ms},
+          {"count", t.count},
+          {"cpu_mean", t.cpu_mean_ms}};
+}
+
+/// Issue 7: dynamic keypoints and instances, means and per-frame series.
+nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std::string& segmenter,
+                            bool enabled) {
+  nlohmann::json out;
+  out["enabled"] = enabled;
+  out["segmenter"] = segmenter;
+  const double n = std::max<size_t>(1, history.size());
+  double kp = 0, dyn = 0, stat = 0, prior = 0, moving = 0, prior_moving = 0, prior_static = 0,
+         masked = 0;
+  int culled = 0;
+  nlohmann::json series = {{"dynamic_keypoints", nlohmann::json::array()},
+                           {"static_keypoints", nlohmann::json::array()},
+                           {"prior_instances", nlohmann::json::array()},
+                           {"dynamic_instances", nlohmann::json::array()},
+                           {"moving_ids", nlohmann::json::array()}};
+  for (const FrameDynamics& f : history) {
+    kp += f.keypoints;
+    dyn += f.dynamic_keypoints;
+    stat += f.static_keypoints;
+    prior += f.prior_instances;
+    moving += f.moving_instances;
+    prior_moving += f.prior_moving;
+    prior_static += f.prior_static;
+    masked += f.masked_share;
+    culled += f.culled_points;
+    series["dynamic_keypoints"].push_back(f.dynamic_keypoints);
+    series["static_keypoints"].push_back(f.static_keypoints);
+    series["prior_instances"].push_back(f.prior_instances);
+    series["dynamic_instances"].push_back(f.moving_instances + f.prior_moving);
+    series["moving_ids"].push_back(f.moving_ids);
+  }
+  out["mean_keypoints"] = kp / n;
+  out["mean_dynamic_keypoints"] = dyn / n;
+  out["mean_static_keypoints"] = stat / n;
+  out["mean_prior_instances"] = prior / n;
+  out["mean_dynamic_instances"] = (moving + prior_moving) / n;
+  out["mean_moving_nonprior_instances"] = moving / n;
+  out["mean_prior_moving"] = prior_moving / n;
+  out["mean_prior_static"] = prior_static / n;
+  out["mean_masked_share"] = masked / n;
+  out["culled_points"] = culled;
+  out["per_frame"] = series;
+  return out;
+}
+
+}  // namespace
+
+void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
+  latency_ms_.push_back(result.latency_ms);
+  if (result.dynamics) dynamics_.push_back(*result.dynamics);
+}
+
+void StatsSink::finish(const RunEnd& end) {
+  const RunSummary& s = end.summary;
+  const SlamSystem& slam = end.system.slam();
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [stage, t] : end.system.timers().summary()) stages[stage] = timingJson(t);
+  const TimingSummary latency = summarize(latency_ms_);
+  const auto mapping = slam.mappingStats();
+  // Issue 4: loops with the frames that closed them (frame = the SLAM frame counter, which is
+  // the input index unless corrupt frames were skipped).
+  nlohmann::json loops = nlohmann::json::array();
+  nlohmann::json loop_frames = nlohmann::json::array();
+  for (const LoopEvent& e : slam.loops()) {
+    loop_frames.push_back(e.frame_id);
+    loops.push_back({{"frame", e.frame_id},
+                     {"t", e.stamp_s},
+                     {"loop_frame", e.loop_frame_id},
+                     {"keyframe", e.keyframe_id},
+                     {"loop_keyframe", e.loop_keyframe_id},
+                     {"matches", e.matches},
+                     {"correction_m", e.correction_m}});
+  }
+  const size_t offered = s.frames + s.dropped;
+  nlohmann::json stats = {
+      {"mode", end.mode},
+      {"frames", s.frames},
+      {"tracked", s.tracked},
+      {"lost", s.lost},
+      {"skipped_corrupt", s.skipped},
+      {"dropped", s.dropped},
+      {"dropped_share", offered ? double(s.dropped) / double(offered) : 0.0},
+      {"relocalisations", s.relocalisation_frames.size()},
+      {"relocalisation_frames", s.relocalisation_frames},
+      {"loops", loops.size()},
+      {"loop_frames", loop_frames},
+      {"loop_details", loops},
+      {"keyframes", slam.numKeyFrames()},
+      {"map_points", slam.numMapPoints()},
+      {"keyframes_culled", mapping.keyframes_culled},
+      {"points_triangulated", mapping.new_points_triangulated},
+      {"bundle_adjustments", mapping.bundle_adjustments},
+      {"wall_s", end.wall_s},
+      {"cpu_s", processCpuSeconds()},
+      {"fps", end.wall_s > 0 ? s.frames / end.wall_s : 0.0},
+      {"stage_ms", stages},
+      {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
+      {"peak_rss_mb", peakRssMb()}};
+  stats["dynamics"] =
+      dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
+  writeJsonFile(out_dir_ / "stats.json", stats);
+}
+
+}  // namespace dynanav

@@ -1,0 +1,33 @@
+#include "slam/keypoint_drop.hpp"
+
+namespace dynanav {
+
+std::vector<float> predictedMapPointDepths(const Frame& frame) {
+  std::vector<float> depth_m(frame.size(), 0.f);
+  for (int i = 0; i < frame.size(); ++i) {
+    const MapPointPtr& point = frame.map_points[i];
+    if (!point || frame.outlier[i] || point->bad) continue;
+    depth_m[i] = static_cast<float>((frame.T_camera_world * point->p_world).z());
+  }
+  return depth_m;
+}
+
+int applyKeypointDrop(Frame& frame, const KeypointDrop& drop) {
+  int culled = 0;
+  auto cull = [&culled](const MapPointPtr& point) {
+    if (!point || point->bad || point->numObservations() < 1) return;
+    point->setBad();
+    ++culled;
+  };
+  for (int i : drop.cull_vanished) cull(frame.map_points[i]);
+  for (size_t k = 0; k < drop.drop.size(); ++k) {
+    const int i = drop.drop[k];
+    if (drop.cull_on_drop[k]) cull(frame.map_points[i]);
+    frame.features.usable[i] = 0;
+    frame.map_points[i].reset();
+    frame.outlier[i] = 0;
+  }
+  return culled;
+}
+
+}  // namespace dynanav

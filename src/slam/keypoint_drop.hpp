@@ -1,0 +1,31 @@
+#pragma once
+// What mover rejection (dynamics, DESIGN.md §1 step 5) decided for a frame's keypoints, for slam
+// to apply under its map lock: the decision is a pure function of the frame, the applying is
+// slam's, so the pipeline never touches the map.
+#include <vector>
+
+#include "slam/frame.hpp"
+
+namespace dynanav {
+
+struct KeypointDrop {
+  /// Keypoints measured deeper than their map point predicts: the point is gone (it lay on
+  /// something that moved) and is culled before anything is dropped.
+  std::vector<int> cull_vanished;
+  /// Keypoints to make unusable (match, outlier flag and usable flag cleared), ascending.
+  std::vector<int> drop;
+  /// Per entry of `drop`: also cull its map point (the keypoint lies on a moving object).
+  std::vector<bool> cull_on_drop;
+  [[nodiscard]] bool empty() const { return cull_vanished.empty() && drop.empty(); }
+};
+
+/// Depth of each keypoint's matched map point in the frame's camera at its current pose (0 = no
+/// usable match: none, an outlier, or a bad point). The caller holds the map lock.
+std::vector<float> predictedMapPointDepths(const Frame& frame);
+
+/// Applies `drop` to the frame, in order: vanished points culled, then each dropped keypoint's
+/// point culled if asked, and the keypoint made unusable. A point is culled once (set bad) and
+/// only if it is a real map point. Returns the points culled. The caller holds the map lock.
+int applyKeypointDrop(Frame& frame, const KeypointDrop& drop);
+
+}  // namespace dynanav

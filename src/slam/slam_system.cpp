@@ -1,0 +1,138 @@
+#include "slam/slam_system.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <mutex>
+
+#include "core/error.hpp"
+#include "slam/loop_closer.hpp"
+#include "slam/loop_places.hpp"
+#include "slam/map.hpp"
+#include "slam/mapping_stage.hpp"
+#include "slam/orb_extractor.hpp"
+#include "slam/relocaliser.hpp"
+#include "slam/vocabulary/vocabulary.hpp"
+#include "slam/vocabulary/vocabulary_path.hpp"
+
+namespace dynanav {
+
+SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageTimers* timers)
+    : config_(config),
+      camera_(std::make_shared<const PinholeCamera>(camera)),
+      scales_(std::make_shared<const PyramidScales>(PyramidScales::fromConfig(config.orb))),
+      extractor_(std::make_unique<OrbExtractor>(config.orb)),
+      map_(std::make_unique<Map>()),
+      mapping_(
+          std::make_unique<MappingStage>(*map_, config.mapping, !config.run.deterministic, timers)),
+      tracker_(std::make_unique<Tracker>(*map_, *mapping_, config.tracking)) {
+  setUpPlaceRecognition();
+}
+
+void SlamSystem::setUpPlaceRecognition() {
+  const LoopConfig& loop = config_.loop;
+  if (!loop.relocalisation && !loop.loop_closing) return;
+  try {
+    vocabulary_ = std::make_shared<const Vocabulary>(
+        Vocabulary::load(findVocabulary(loop.vocabulary).string()));
+  } catch (const InputError& e) {
+    spdlog::warn("relocalisation and loop closing disabled: {}", e.what());
+    return;
+  }
+  places_ = std::make_unique<PlaceIndex>(vocabulary_, loop);
+  // The loop closer also feeds the keyframe database, which relocalisation needs on its own.
+  loop_closer_ = std::make_unique<LoopCloser>(
+      *map_, *places_, loop, config_.mapping.covisibility_min_weight, !config_.run.deterministic);
+  mapping_->setKeyFrameSink([this](const KeyFramePtr& kf) { loop_closer_->process(kf); });
+  if (loop.relocalisation) {
+    relocaliser_ = std::make_unique<Relocaliser>(*places_, loop, config_.tracking);
+    tracker_->setRelocaliser(relocaliser_.get());
+  }
+}
+
+SlamSystem::~SlamSystem() {
+  finish();
+}
+
+Frame SlamSystem::extract(const cv::Mat& grey, const cv::Mat& depth_m, double stamp_s,
+                          const cv::Mat& allowed) {
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;
+  extractor_->extract(grey, allowed, keypoints, descriptors);
+  return Frame(next_frame_id_++, stamp_s,
+               makeFeatures(std::move(keypoints), descriptors, depth_m,
+                            config_.tracking.depth_max_m, camera_, scales_));
+}
+
+InitialPose SlamSystem::initialPose(Frame& frame) {
+  return tracker_->initialPose(frame);
+}
+
+std::vector<float> SlamSystem::predictedDepths(const Frame& frame) const {
+  std::unique_lock lock(map_->mutex());  // local BA moves points in real-time mode
+  return predictedMapPointDepths(frame);
+}
+
+int SlamSystem::applyDrop(Frame& frame, const KeypointDrop& drop) {
+  if (drop.empty()) return 0;
+  std::unique_lock lock(map_->mutex());
+  return applyKeypointDrop(frame, drop);
+}
+
+TrackOutcome SlamSystem::trackLocalMap(Frame& frame, InitialPose initial) {
+  return tracker_->trackLocalMap(frame, std::move(initial));
+}
+
+void SlamSystem::finishFrame(const Frame& frame, const TrackOutcome& outcome) {
+  mapping_->runPending();
+  if (outcome.state != TrackingState::kOk || !outcome.reference) return;
+  std::unique_lock lock(map_->mutex());  // the reference's pose may be under local BA
+  anchors_.push_back({frame.stamp_s, outcome.reference,
+                      frame.T_camera_world * outcome.reference->T_world_camera()});
+}
+
+void SlamSystem::finish() {
+  if (finished_) return;
+  finished_ = true;
+  // Order matters: local mapping hands its last keyframes to the loop closer, a global BA the
+  // loop closer started must end before the final whole-map BA touches the same keyframes.
+  mapping_->stop();
+  if (loop_closer_) loop_closer_->finish();
+  mapping_->finalBundleAdjustment();
+}
+
+std::vector<StampedPose> SlamSystem::keyframePoses() const {
+  std::unique_lock lock(map_->mutex());
+  std::vector<StampedPose> poses;
+  for (const auto& [id, kf] : map_->keyframes())
+    if (!kf->bad) poses.push_back({kf->stamp_s, kf->T_world_camera()});
+  return poses;
+}
+
+std::vector<StampedPose> SlamSystem::refinedTrajectory() const {
+  std::unique_lock lock(map_->mutex());
+  std::vector<StampedPose> poses;
+  poses.reserve(anchors_.size());
+  for (const auto& a : anchors_)
+    poses.push_back({a.stamp_s, anchoredPose(*a.reference, a.T_frame_reference).inverse()});
+  return poses;
+}
+
+std::vector<LoopEvent> SlamSystem::loops() const {
+  return loop_closer_ ? loop_closer_->loops() : std::vector<LoopEvent>{};
+}
+
+LocalMapperStats SlamSystem::mappingStats() const {
+  return mapping_->stats();
+}
+
+size_t SlamSystem::numMapPoints() const {
+  std::unique_lock lock(map_->mutex());
+  return map_->numPoints();
+}
+
+size_t SlamSystem::numKeyFrames() const {
+  std::unique_lock lock(map_->mutex());
+  return map_->numKeyFrames();
+}
+
+}  // namespace dynanav

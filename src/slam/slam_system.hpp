@@ -1,0 +1,94 @@
+#pragma once
+// The SLAM facade (DESIGN.md §1 steps 3-6 and 10): it owns the map and its lock, the ORB
+// extractor, the tracker, the local-mapping stage, place recognition, the loop closer and the
+// per-frame anchors, and knows their shutdown order. The pipeline calls its phases in order and
+// puts mover rejection (dynamics) between the initial pose and the local map; every lock is
+// taken in here, never by the caller.
+#include <memory>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/config.hpp"
+#include "core/timer.hpp"
+#include "io/trajectory.hpp"
+#include "slam/frame.hpp"
+#include "slam/keypoint_drop.hpp"
+#include "slam/local_mapper.hpp"
+#include "slam/tracker.hpp"
+
+namespace dynanav {
+
+class OrbExtractor;
+class Map;
+class MappingStage;
+class Vocabulary;
+class PlaceIndex;
+class Relocaliser;
+class LoopCloser;
+struct LoopEvent;
+struct PyramidScales;
+
+class SlamSystem {
+ public:
+  /// `timers` (may be null) receives local mapping's stage times.
+  SlamSystem(const Config& config, const PinholeCamera& camera, StageTimers* timers);
+  ~SlamSystem();
+  SlamSystem(const SlamSystem&) = delete;
+  SlamSystem& operator=(const SlamSystem&) = delete;
+
+  /// 3. ORB features of a grey image where `allowed` (CV_8U, empty = everywhere) permits.
+  Frame extract(const cv::Mat& grey, const cv::Mat& depth_m, double stamp_s,
+                const cv::Mat& allowed);
+  /// 4. Initial pose (motion model, reference keyframe or relocalisation), or map initialisation.
+  InitialPose initialPose(Frame& frame);
+  /// For 5: depth of each keypoint's matched map point in the frame's camera (0 = no usable match).
+  [[nodiscard]] std::vector<float> predictedDepths(const Frame& frame) const;
+  /// 5. Applies mover rejection's decision; returns the map points culled.
+  int applyDrop(Frame& frame, const KeypointDrop& drop);
+  /// 6. Local-map tracking on the static points left, and the keyframe decision.
+  TrackOutcome trackLocalMap(Frame& frame, InitialPose initial);
+  /// 10. Local mapping of the new keyframes (inline in deterministic mode), then remembers the
+  /// frame's anchor on its reference keyframe for the refined trajectory.
+  void finishFrame(const Frame& frame, const TrackOutcome& outcome);
+  /// Drains local mapping, joins a running global BA, then runs the final whole-map BA
+  /// (idempotent).
+  void finish();
+
+  /// Keyframe poses (T_world_camera) ordered by time, as optimised so far.
+  [[nodiscard]] std::vector<StampedPose> keyframePoses() const;
+  /// Every tracked frame's pose re-anchored on its reference keyframe as that is now (after
+  /// later bundle adjustments), as ORB-SLAM2 saves its trajectory.
+  [[nodiscard]] std::vector<StampedPose> refinedTrajectory() const;
+  [[nodiscard]] LocalMapperStats mappingStats() const;
+  [[nodiscard]] size_t numMapPoints() const;
+  [[nodiscard]] size_t numKeyFrames() const;
+  /// Loops closed so far (issue 4); empty when loop closing is off or has no vocabulary.
+  [[nodiscard]] std::vector<LoopEvent> loops() const;
+
+ private:
+  /// Issue 4: vocabulary, keyframe database, relocaliser and loop closer, if the vocabulary loads.
+  void setUpPlaceRecognition();
+
+  Config config_;
+  std::shared_ptr<const PinholeCamera> camera_;
+  std::shared_ptr<const PyramidScales> scales_;
+  std::unique_ptr<OrbExtractor> extractor_;
+  std::unique_ptr<Map> map_;
+  std::unique_ptr<MappingStage> mapping_;
+  std::unique_ptr<Tracker> tracker_;
+  // Place recognition (issue 4); declared after the map and stages so they go first.
+  std::shared_ptr<const Vocabulary> vocabulary_;
+  std::unique_ptr<PlaceIndex> places_;
+  std::unique_ptr<Relocaliser> relocaliser_;
+  std::unique_ptr<LoopCloser> loop_closer_;
+  uint64_t next_frame_id_ = 0;
+  bool finished_ = false;
+  struct FrameAnchor {
+    double stamp_s;
+    std::shared_ptr<KeyFrame> reference;
+    SE3 T_frame_reference;
+  };
+  std::vector<FrameAnchor> anchors_;  ///< one per tracked frame
+};
+
+}  // namespace dynanav
