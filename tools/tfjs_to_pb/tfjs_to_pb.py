@@ -198,6 +198,10 @@ def const_tensor(name, attr_json, values):
         if isinstance(v, list):  # strings
             return "DT_STRING", wire.tensor("DT_STRING", [len(v)] if len(v) != 1 else [], string_val=v)
         dt = DT_OF[str(v.dtype)]
+        if dt == "DT_INT32" and v.size == 1:
+            # As TensorFlow itself writes small constants; OpenCV reads e.g. ConcatV2's axis
+            # only from int_val (an empty int_val crashes its importer).
+            return dt, wire.tensor(dt, list(v.shape), int_val=[int(v.ravel()[0])])
         return dt, wire.tensor(dt, list(v.shape), content=v.astype(v.dtype.newbyteorder("<")).tobytes())
     dims = [int(d.get("size", "0")) for d in t.get("tensorShape", {}).get("dim", [])]
     return t.get("dtype", "DT_FLOAT"), wire.tensor(
