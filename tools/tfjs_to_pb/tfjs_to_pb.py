@@ -61,8 +61,10 @@ def read_weights(model_json: pathlib.Path, manifest) -> dict:
                     offset += 4 + int(n)
                 values[w["name"]] = strings
                 continue
+            stored = np.dtype(NP_DTYPES[q["dtype"] if q else w["dtype"]]).newbyteorder("<")
+            if offset + count * stored.itemsize > len(data):
+                raise ConversionError(f"weight {w['name']} runs past the end of the shards {group['paths']}")
             if q:
-                stored = np.dtype(NP_DTYPES[q["dtype"]]).newbyteorder("<")
                 raw = np.frombuffer(data, stored, count, offset)
                 offset += count * stored.itemsize
                 if q["dtype"] == "float16":
@@ -72,11 +74,8 @@ def read_weights(model_json: pathlib.Path, manifest) -> dict:
                            np.float32(q["min"])).astype(np.float32)
                 arr = arr.astype(NP_DTYPES[q.get("original_dtype", w["dtype"])])
             else:
-                stored = np.dtype(NP_DTYPES[w["dtype"]]).newbyteorder("<")
                 arr = np.frombuffer(data, stored, count, offset).copy()
                 offset += count * stored.itemsize
-            if offset > len(data):
-                raise ConversionError(f"weight {w['name']} runs past the end of the shards")
             values[w["name"]] = arr.reshape(dims)
         if offset != len(data):
             raise ConversionError(f"shards {group['paths']} hold {len(data)} bytes, manifest {offset}")
