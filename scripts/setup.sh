@@ -10,7 +10,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format clang-tidy
   opencv-doc
+  python3-numpy python3-opencv openssl   # tools/tfjs_to_pb, its tests, fetch_models.sh's checks
 )
+# scripts/fetch_models.sh gets the models with npm; a node.js from elsewhere (e.g. NodeSource)
+# brings its own npm, so Debian's is installed only when there is none.
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do

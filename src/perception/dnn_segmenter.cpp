@@ -16,7 +16,8 @@ Instances paintObjects(std::vector<MaskedObject> objects, const cv::Mat& depth_m
                        double bin_m) {
   std::vector<float> depth(objects.size(), 0.f);
   for (size_t i = 0; i < objects.size(); ++i)
-    if (!depth_m.empty()) depth[i] = depthMode(depth_m(objects[i].record.box), objects[i].mask_in_box, bin_m);
+    if (!depth_m.empty())
+      depth[i] = depthMode(depth_m(objects[i].record.box), objects[i].mask_in_box, bin_m);
   std::vector<size_t> order(objects.size());
   std::iota(order.begin(), order.end(), 0);
   // Masks cut from depth alone (objects, fall-backs) go first: they also take whatever else
@@ -49,22 +50,24 @@ DnnSegmenter::PersonModels::PersonModels(const std::filesystem::path& models_dir
 
 DnnSegmenter::DnnSegmenter(const std::filesystem::path& models_dir, const PerceptionConfig& config)
     : config_(config),
-      detector_(models_dir, config),
+      detector_(makeObjectDetector(models_dir, config)),
       object_classes_(config.object_classes.begin(), config.object_classes.end()) {
   const int lanes = config.parallel_person_models ? 2 : 1;
   lanes_.reserve(lanes);
   for (int i = 0; i < lanes; ++i) lanes_.emplace_back(models_dir, config);
 }
 
-std::vector<std::vector<DnnSegmenter::PersonTask>> DnnSegmenter::scheduleLanes(size_t people) const {
+std::vector<std::vector<DnnSegmenter::PersonTask>> DnnSegmenter::scheduleLanes(
+    const std::vector<MaskedObject>& people) const {
   // Relative single-thread costs measured by bench_perception on idle cores: MoveNet 16.4 ms,
   // selfie mask (with depth refinement) 10.8 ms per person. Longest first, each call to the
   // lane that is free first: two people → each lane runs one MoveNet and one mask.
   constexpr double kKeypointCost = 3.0, kMaskCost = 2.0;
   std::vector<PersonTask> tasks;
   if (config_.keypoints)
-    for (size_t p = 0; p < people; ++p) tasks.push_back({p, true});
-  for (size_t p = 0; p < people; ++p) tasks.push_back({p, false});
+    for (size_t p = 0; p < people.size(); ++p)
+      if (!people[p].record.keypoints) tasks.push_back({p, true});
+  for (size_t p = 0; p < people.size(); ++p) tasks.push_back({p, false});
   std::vector<std::vector<PersonTask>> lanes(lanes_.size());
   std::vector<double> load(lanes_.size(), 0.0);
   for (const PersonTask& t : tasks) {
@@ -75,8 +78,8 @@ std::vector<std::vector<DnnSegmenter::PersonTask>> DnnSegmenter::scheduleLanes(s
   return lanes;
 }
 
-cv::Mat DnnSegmenter::personMask(SelfieSegmenter& selfie, const RgbdFrame& frame, const cv::Rect& box,
-                                 std::string& source) {
+cv::Mat DnnSegmenter::personMask(SelfieSegmenter& selfie, const RgbdFrame& frame,
+                                 const cv::Rect& box, std::string& source) {
   cv::Mat mask = selfie.maskInBox(frame.bgr, box);
   source = "selfie";
   if (frame.depth_m.empty()) return mask;
@@ -84,7 +87,8 @@ cv::Mat DnnSegmenter::personMask(SelfieSegmenter& selfie, const RgbdFrame& frame
   refineMaskByDepth(mask, frame.depth_m(box), config_.depth_bin_m, config_.depth_band_m);
   // The selfie model misses ~6 % of confident boxes (dark clothes, blur, backs; MODELS.md).
   if (cv::countNonZero(mask) < config_.selfie_min_box_share * box.area()) {
-    cv::Mat fallback = depthMaskInBox(frame.depth_m, box, config_.depth_bin_m, config_.depth_band_m);
+    cv::Mat fallback =
+        depthMaskInBox(frame.depth_m, box, config_.depth_bin_m, config_.depth_band_m);
     if (cv::countNonZero(fallback) > cv::countNonZero(mask)) {
       source = "depth";
       return fallback;
@@ -96,8 +100,8 @@ cv::Mat DnnSegmenter::personMask(SelfieSegmenter& selfie, const RgbdFrame& frame
 Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   using Clock = std::chrono::steady_clock;
   timing_.clear();
-  const std::vector<Detection> detections = detector_.detect(frame.bgr);
-  const DetectorTiming& dt = detector_.lastTiming();
+  const std::vector<Detection> detections = detector_->detect(frame.bgr);
+  const DetectorTiming& dt = detector_->lastTiming();
   timing_["detect_pre"] = dt.preprocess_ms;
   timing_["detect_forward"] = dt.forward_ms;
   timing_["detect_post"] = dt.postprocess_ms;
@@ -114,10 +118,13 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
     o.record.score = d.score;
     o.record.box = d.box;
     if (d.class_id == 0) {
-      if (d.score < config_.person_min_score || d.box.height < config_.person_min_height_px) continue;
+      if (d.score < config_.person_min_score || d.box.height < config_.person_min_height_px)
+        continue;
+      if (config_.keypoints) o.record.keypoints = d.keypoints;  // MultiPose finds them with the box
       people.push_back(std::move(o));
     } else if (object_classes_.count(d.class_name) && !frame.depth_m.empty()) {
-      o.mask_in_box = depthMaskInBox(frame.depth_m, d.box, config_.depth_bin_m, config_.depth_band_m);
+      o.mask_in_box =
+          depthMaskInBox(frame.depth_m, d.box, config_.depth_bin_m, config_.depth_band_m);
       o.record.mask_source = "depth";
       objects.push_back(std::move(o));
     }
@@ -125,7 +132,7 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   timing_["object_masks"] = msSince(t0);
 
   t0 = Clock::now();
-  const std::vector<std::vector<PersonTask>> schedule = scheduleLanes(people.size());
+  const std::vector<std::vector<PersonTask>> schedule = scheduleLanes(people);
   std::vector<double> masks_ms(schedule.size(), 0.0), keypoints_ms(schedule.size(), 0.0);
   auto runLane = [&](size_t lane) {
     PersonModels& models = lanes_[lane];
@@ -142,9 +149,12 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
     }
   };
   if (schedule.size() > 1 && !people.empty()) {
-    cv::parallel_for_(cv::Range(0, int(schedule.size())), [&](const cv::Range& r) {
-      for (int lane = r.start; lane < r.end; ++lane) runLane(size_t(lane));
-    }, double(schedule.size()));
+    cv::parallel_for_(
+        cv::Range(0, int(schedule.size())),
+        [&](const cv::Range& r) {
+          for (int lane = r.start; lane < r.end; ++lane) runLane(size_t(lane));
+        },
+        double(schedule.size()));
   } else {
     for (size_t lane = 0; lane < schedule.size(); ++lane) runLane(lane);
   }
@@ -155,7 +165,8 @@ Instances DnnSegmenter::segment(const RgbdFrame& frame) {
   timing_["masks"] = std::accumulate(masks_ms.begin(), masks_ms.end(), 0.0);
   timing_["keypoints"] = std::accumulate(keypoints_ms.begin(), keypoints_ms.end(), 0.0);
   t0 = Clock::now();
-  Instances out = paintObjects(std::move(people), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
+  Instances out =
+      paintObjects(std::move(people), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
   timing_["paint"] = msSince(t0);
   return out;
 }
@@ -182,8 +193,9 @@ Instances HogSegmenter::segment(const RgbdFrame& frame) {
   const cv::Rect image(0, 0, frame.bgr.cols, frame.bgr.rows);
   for (size_t i = 0; i < found.size(); ++i) {
     const cv::Rect& r = found[i];
-    const cv::Rect box = cv::Rect(cvRound(r.x / kScale), cvRound(r.y / kScale), cvRound(r.width / kScale),
-                                  cvRound(r.height / kScale)) & image;
+    const cv::Rect box = cv::Rect(cvRound(r.x / kScale), cvRound(r.y / kScale),
+                                  cvRound(r.width / kScale), cvRound(r.height / kScale)) &
+                         image;
     if (box.area() == 0 || frame.depth_m.empty()) continue;  // HOG boxes need depth for a mask
     MaskedObject o;
     o.record.class_name = "person";
@@ -193,7 +205,8 @@ Instances HogSegmenter::segment(const RgbdFrame& frame) {
     o.mask_in_box = depthMaskInBox(frame.depth_m, box, config_.depth_bin_m, config_.depth_band_m);
     objects.push_back(std::move(o));
   }
-  Instances out = paintObjects(std::move(objects), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
+  Instances out =
+      paintObjects(std::move(objects), frame.depth_m, frame.bgr.size(), config_.depth_bin_m);
   timing_["masks"] = msSince(t0);
   return out;
 }

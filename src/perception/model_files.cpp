@@ -54,4 +54,19 @@ std::vector<std::string> dnnModelFiles(bool with_keypoints) {
   return files;
 }
 
+std::vector<std::string> dnnNpmModelFiles(bool with_keypoints) {
+  std::vector<std::string> files{model_files::kMultiPose, model_files::kSelfie};
+  if (with_keypoints) files.emplace_back(model_files::kMoveNet);
+  return files;
+}
+
+fs::path findDnnModelsDir(const std::string& explicit_dir, bool with_keypoints) {
+  for (const fs::path& dir : modelSearchPath(explicit_dir)) {
+    for (const auto& files : {dnnModelFiles(with_keypoints), dnnNpmModelFiles(with_keypoints)}) {
+      if (fs::path found = findModelsDir(dir.string(), files); !found.empty()) return found;
+    }
+  }
+  return {};
+}
+
 }  // namespace dynanav

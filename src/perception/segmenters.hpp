@@ -1,7 +1,7 @@
 #pragma once
 // The concrete segmenters behind makeSegmenter(); declared here for tests and benchmarks.
-#include <optional>
 #include <opencv2/objdetect.hpp>
+#include <optional>
 #include <set>
 
 #include "perception/box_models.hpp"
@@ -47,11 +47,13 @@ class DnnSegmenter final : public Segmenter {
   cv::Mat personMask(SelfieSegmenter& selfie, const RgbdFrame& frame, const cv::Rect& box,
                      std::string& source);
   /// Longest-first assignment of the people's network calls to the lanes (deterministic).
-  [[nodiscard]] std::vector<std::vector<PersonTask>> scheduleLanes(size_t people) const;
+  /// People whose detection brought keypoints (MultiPose) need no MoveNet call.
+  [[nodiscard]] std::vector<std::vector<PersonTask>> scheduleLanes(
+      const std::vector<MaskedObject>& people) const;
 
   PerceptionConfig config_;
-  YoloDetector detector_;
-  std::vector<PersonModels> lanes_;  ///< 2 with parallel_person_models, else 1
+  std::unique_ptr<ObjectDetector> detector_;  ///< Yolo-Fastest, or MultiPose with npm models only
+  std::vector<PersonModels> lanes_;           ///< 2 with parallel_person_models, else 1
   std::set<std::string> object_classes_;
   std::map<std::string, double> timing_;
 };
