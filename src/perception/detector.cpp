@@ -31,7 +31,8 @@ YoloDetector::YoloDetector(const fs::path& models_dir, const PerceptionConfig& c
     : config_(config) {
   if (config.detector_input_px < 64 || config.detector_input_px % 32 != 0)
     throw InputError("perception.detector_input_px",
-                     "must be a multiple of 32 and at least 64, got " + std::to_string(config.detector_input_px));
+                     "must be a multiple of 32 and at least 64, got " +
+                         std::to_string(config.detector_input_px));
   const fs::path cfg = requireModelFile(models_dir, model_files::kDetectorCfg);
   const fs::path weights = requireModelFile(models_dir, model_files::kDetectorWeights);
   names_ = readNames(requireModelFile(models_dir, model_files::kCocoNames));
@@ -94,7 +95,8 @@ std::vector<Detection> YoloDetector::detect(const cv::Mat& bgr) {
   for (int i : keep) {
     const cv::Rect box = boxes[size_t(i)] & image;
     if (box.area() <= 0 || box.height < config_.min_box_height_px) continue;
-    detections.push_back({classes[size_t(i)], names_[size_t(classes[size_t(i)])], scores[size_t(i)], box});
+    detections.push_back({classes[size_t(i)], names_[size_t(classes[size_t(i)])], scores[size_t(i)],
+                          box, std::nullopt});
   }
   std::sort(detections.begin(), detections.end(),
             [](const Detection& a, const Detection& b) { return a.score > b.score; });

@@ -1,8 +1,10 @@
 #pragma once
 // The per-frame preparation step (DESIGN.md §1, "FramePrep"): the images several stages need,
-// computed once per frame and shared — the grey image (ORB extraction) and its half-size copy
-// (scene flow; object point tracking).
+// computed once per frame and shared — the grey image (ORB extraction), its half-size copy
+// (scene flow, object point tracking) and the dense optical flow from the previous frame to
+// this one (object point tracking; DIS, Kroeger et al. ECCV 2016, OpenCV's ultrafast preset).
 #include <opencv2/core.hpp>
+#include <opencv2/video/tracking.hpp>
 
 #include "core/frame.hpp"
 
@@ -11,9 +13,28 @@ namespace dynanav {
 struct PreparedFrame {
   cv::Mat grey;       ///< CV_8U, full size
   cv::Mat grey_half;  ///< CV_8U, half size (INTER_AREA); empty unless asked for
+  /// CV_32FC2 at half size: for each pixel of the previous frame's grey_half, where it went in
+  /// this one (half-size pixels). Empty on the first frame, after a size change, or unless asked.
+  cv::Mat flow_half;
 };
 
 /// Grey image of `frame` (BGR or already grey) and, when `with_half`, its half-size copy.
 PreparedFrame prepareFrame(const RgbdFrame& frame, bool with_half);
+
+/// Prepares frames in sequence order, remembering the previous one for the flow.
+class FramePrep {
+ public:
+  struct Needs {
+    bool half = false;  ///< grey_half
+    bool flow = false;  ///< flow_half (implies half)
+  };
+  explicit FramePrep(Needs needs) : needs_(needs) {}
+  PreparedFrame prepare(const RgbdFrame& frame);
+
+ private:
+  Needs needs_;
+  cv::Mat previous_half_;
+  cv::Ptr<cv::DISOpticalFlow> dis_;
+};
 
 }  // namespace dynanav

@@ -13,7 +13,10 @@ namespace dynanav {
 
 System::System(const Config& config, const PinholeCamera& camera,
                const std::filesystem::path& sequence_dir)
-    : config_(config), camera_(camera), dynamic_(config.run.dynamic) {
+    : config_(config),
+      camera_(camera),
+      dynamic_(config.run.dynamic),
+      prep_({.half = config.run.dynamic}) {
   if (dynamic_) {
     SegmenterRequest request;
     request.name = config.run.segmenter;
@@ -42,9 +45,9 @@ void System::finish() {
 FrameResult System::process(const RgbdFrame& input) {
   ScopedTimer processing(timers_, "frame");
   FrameResult result;
-  const PreparedFrame prep = prepareFrame(input, dynamic_);  // 1. grey images, once
-  result.instances = segment(input);                         // 2. segment (or propagate)
-  const cv::Mat allowed = extractionMask(input, result);     // 3. ORB off prior and known movers
+  const PreparedFrame prep = prep_.prepare(input);        // 1. grey images (and flow), once
+  result.instances = segment(input);                      // 2. segment (or propagate)
+  const cv::Mat allowed = extractionMask(input, result);  // 3. ORB off prior and known movers
   Frame frame = extractFeatures(prep, input, allowed, result.instances);
   TrackOutcome outcome;
   {

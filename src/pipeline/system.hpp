@@ -59,6 +59,7 @@ class System {
   PinholeCamera camera_;
   bool dynamic_ = false;
   StageTimers timers_;
+  FramePrep prep_;
   std::unique_ptr<Segmenter> segmenter_;  // null with dynamics off
   std::string segmenter_name_ = "off";
   std::unique_ptr<SlamSystem> slam_;
