@@ -6,7 +6,7 @@
 # config_used.yaml, a tiny vocabulary). The corpus under build/fuzz/corpus/ grows from run to
 # run. A finding (crash, sanitizer report, uncaught exception, timeout) leaves its input in
 # build/fuzz/findings/ and fails the script.
-# Usage: scripts/fuzz.sh [SECONDS=60] [FUZZER...]     e.g. scripts/fuzz.sh 300 fuzz_config
+# Usage: [FUZZ_PARALLEL=N] scripts/fuzz.sh [SECONDS=60] [FUZZER...]   e.g. scripts/fuzz.sh 300 fuzz_config
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -60,25 +60,36 @@ printf 'orb:\n  n_features: 1500\nrun:\n  dynamic: false\n' >"$seeds/fuzz_config
 for png in $(ls "$sim"/masks/*.png | sed -n '1p;6p;12p'); do cp "$png" "$seeds/fuzz_mask_png/"; done
 "$cli" vocabulary train "$sim/rgb" --k 3 --levels 2 --features 100 --out "$seeds/fuzz_vocabulary/tiny.dnvoc" >/dev/null 2>&1
 
-declare -A max_len=([fuzz_mask_png]=65536 [fuzz_vocabulary]=16384)
-status=0
-printf '%-18s %8s %10s %8s %8s\n' fuzzer seconds execs execs/s corpus
-for f in "${fuzzers[@]}"; do
-  log=$root/$f.log
-  set +e
+# The targets write each input to a scratch file: in memory when /dev/shm is there.
+if [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
+declare -A max_len=([fuzz_mask_png]=65536 [fuzz_vocabulary]=16384 [fuzz_config]=16384)
+# One fuzzer: its libFuzzer log in $root/<name>.log, a result line in $root/<name>.result.
+run_one() {
+  local f=$1 log=$root/$1.log rc=0
   # -timeout: one input taking longer than 10 s is a hang; -rss_limit_mb: a memory blow-up.
   "$root/bin/$f" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len="${max_len[$f]:-4096}" -print_final_stats=1 \
-    -artifact_prefix="$root/findings/$f-" "$root/corpus/$f" "$seeds/$f" >"$log" 2>&1
-  rc=$?
-  set -e
+    -artifact_prefix="$root/findings/$f-" "$root/corpus/$f" "$seeds/$f" >"$log" 2>&1 || rc=$?
+  local execs rate corpus
   execs=$(grep -oP 'stat::number_of_executed_units:\s*\K\d+' "$log" || echo 0)
   rate=$(grep -oP 'stat::average_exec_per_sec:\s*\K\d+' "$log" || echo 0)
   corpus=$(ls "$root/corpus/$f" | wc -l)
-  printf '%-18s %8s %10s %8s %8s\n' "$f" "$seconds" "$execs" "$rate" "$corpus"
-  if [ $rc -ne 0 ]; then
-    echo "FINDING in $f (exit $rc); input in $root/findings/, log $log:"
-    grep -E "ERROR|SUMMARY|uncaught|deadly|Test unit written" "$log" | head -n 20
+  printf '%-18s %8s %10s %8s %8s %4s\n' "$f" "$seconds" "$execs" "$rate" "$corpus" "$rc" >"$root/$f.result"
+}
+# FUZZ_PARALLEL fuzzers at a time (default 1: CI machines are shared).
+parallel=${FUZZ_PARALLEL:-1}
+for f in "${fuzzers[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
+  run_one "$f" &
+done
+wait
+status=0
+printf '%-18s %8s %10s %8s %8s %4s\n' fuzzer seconds execs execs/s corpus exit
+for f in "${fuzzers[@]}"; do
+  cat "$root/$f.result"
+  if [ "$(awk '{print $6}' "$root/$f.result")" != 0 ]; then
+    echo "FINDING in $f; input in $root/findings/, log $root/$f.log:"
+    grep -E "ERROR|SUMMARY|uncaught|deadly|Test unit written" "$root/$f.log" | head -n 20
     status=1
   fi
 done

@@ -23,6 +23,8 @@ fs::path makeSequence() {
   PinholeCamera camera;
   camera.width = 160;
   camera.height = 120;
+  camera.cx = 79.5;  // inside the image (camera.yaml's range check)
+  camera.cy = 59.5;
   saveCameraYaml(dir / "camera.yaml", camera);
   std::ofstream rgb_list(dir / "rgb.txt"), depth_list(dir / "depth.txt");
   cv::Mat background(120, 160, CV_8UC3);
