@@ -37,7 +37,10 @@ std::string imageBytesProblem(const std::vector<unsigned char>& bytes) {
       if (bytes[k - 1] == 0xFF && bytes[k] == 0xD9) return {};
     return "truncated JPEG (no end-of-image marker)";
   }
-  return {};
+  // OpenCV would pick any of its decoders by content (TIFF, JPEG 2000, DICOM through GDCM, ...);
+  // a DICOM header in a file named .png makes GDCM abort the process (found by fuzz_mask_png).
+  // Sequences and masks are PNG or JPEG, so nothing else reaches a decoder.
+  return "not a PNG or JPEG image";
 }
 
 cv::Mat readImageFile(const fs::path& path, int flags, const std::string& what) {

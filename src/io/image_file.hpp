@@ -3,7 +3,7 @@
 // is an InputError naming it, never an image with a grey bottom. OpenCV decodes a truncated JPEG
 // with only a libjpeg warning on stderr and returns the filled-in image; a truncated PNG may
 // decode too. So the bytes are checked first: a PNG must end with its IEND chunk, a JPEG must
-// hold its end-of-image marker (FF D9) near the end.
+// hold its end-of-image marker (FF D9) near the end; any other format is refused.
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <string>
@@ -11,8 +11,8 @@
 
 namespace dynanav {
 
-/// Empty string when `bytes` look complete, else why not ("zero bytes", "truncated PNG: ...").
-/// Formats other than PNG and JPEG are left to the decoder.
+/// Empty string when `bytes` are a complete PNG or JPEG, else why not ("zero bytes", "truncated
+/// PNG ...", "not a PNG or JPEG image": other formats never reach OpenCV's decoders).
 std::string imageBytesProblem(const std::vector<unsigned char>& bytes);
 
 /// The file decoded with cv::imdecode `flags`; InputError naming `path` (with `what`, e.g.

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "io/image_file.hpp"
 #include "io/json_io.hpp"
 
 namespace fs = std::filesystem;
@@ -46,15 +47,17 @@ std::map<uint16_t, std::string> readMaskClasses(const fs::path& masks_json) {
   return classes;
 }
 
-Instances readMaskPng(const fs::path& png, const std::map<uint16_t, std::string>& classes, cv::Size expected) {
+Instances readMaskPng(const fs::path& png, const std::map<uint16_t, std::string>& classes,
+                      cv::Size expected) {
   if (!fs::is_regular_file(png)) throw InputError(png.string(), "mask file not found");
-  const cv::Mat labels = cv::imread(png.string(), cv::IMREAD_UNCHANGED);
-  if (labels.empty()) throw InputError(png.string(), "cannot decode the mask PNG");
+  // Not cv::imread: it picks a decoder by content, and a DICOM file named .png aborts inside
+  // GDCM (found by fuzz_mask_png). readImageFile decodes PNG and JPEG only.
+  const cv::Mat labels = readImageFile(png, cv::IMREAD_UNCHANGED, "mask PNG");
   if (labels.type() != CV_16UC1)
     throw InputError(png.string(), "mask must be a 16-bit single-channel PNG (instance ids)");
   if (!expected.empty() && labels.size() != expected)
-    throw InputError(png.string(), cv::format("mask is %dx%d, the frame %dx%d", labels.cols, labels.rows,
-                                              expected.width, expected.height));
+    throw InputError(png.string(), cv::format("mask is %dx%d, the frame %dx%d", labels.cols,
+                                              labels.rows, expected.width, expected.height));
   Instances out;
   out.labels = labels;
   std::set<uint16_t> ids;
@@ -101,16 +104,19 @@ Instances MaskFolderWriter::write(const std::string& stem, const Instances& inst
     copy.id = id;
     out.items.push_back(copy);
   }
-  std::sort(out.items.begin(), out.items.end(), [](const Instance& a, const Instance& b) { return a.id < b.id; });
+  std::sort(out.items.begin(), out.items.end(),
+            [](const Instance& a, const Instance& b) { return a.id < b.id; });
   const fs::path png = dir_ / "masks" / (stem + ".png");
-  if (!cv::imwrite(png.string(), out.labels)) throw InputError(png.string(), "cannot write the mask PNG");
+  if (!cv::imwrite(png.string(), out.labels))
+    throw InputError(png.string(), "cannot write the mask PNG");
   return out;
 }
 
 void MaskFolderWriter::finish() {
   nlohmann::ordered_json instances = nlohmann::ordered_json::object();  // ids in numeric order
   for (const auto& [id, name] : classes_) instances[std::to_string(id)] = {{"class", name}};
-  writeTextFile(dir_ / "masks.json", nlohmann::ordered_json{{"instances", instances}}.dump(2) + "\n");
+  writeTextFile(dir_ / "masks.json",
+                nlohmann::ordered_json{{"instances", instances}}.dump(2) + "\n");
   finished_ = true;
 }
 
@@ -126,10 +132,10 @@ MaskFolderWriter::~MaskFolderWriter() {
 Instances addMaskNoise(const Instances& clean, const MaskNoise& noise, int frame_index) {
   if (!noise.active()) return clean;
   Instances out = Instances::none(clean.labels.size());
-  const cv::Mat kernel = noise.grow_px == 0
-                             ? cv::Mat()
-                             : cv::getStructuringElement(cv::MORPH_ELLIPSE,
-                                                         cv::Size(2 * std::abs(noise.grow_px) + 1,
+  const cv::Mat kernel =
+      noise.grow_px == 0
+          ? cv::Mat()
+          : cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * std::abs(noise.grow_px) + 1,
                                                                   2 * std::abs(noise.grow_px) + 1));
   for (const Instance& item : clean.items) {
     std::seed_seq seq{noise.seed, frame_index, int(item.id)};
@@ -140,7 +146,8 @@ Instances addMaskNoise(const Instances& clean, const MaskNoise& noise, int frame
     if (noise.grow_px > 0) cv::dilate(m, m, kernel);
     if (noise.grow_px < 0) cv::erode(m, m, kernel);
     if (noise.shift_px != 0) {
-      std::uniform_int_distribution<int> offset(-std::abs(noise.shift_px), std::abs(noise.shift_px));
+      std::uniform_int_distribution<int> offset(-std::abs(noise.shift_px),
+                                                std::abs(noise.shift_px));
       const int dx = offset(rng), dy = offset(rng);
       const cv::Matx23d shift(1, 0, dx, 0, 1, dy);
       cv::warpAffine(m, m, shift, m.size(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar());
@@ -159,13 +166,15 @@ Instances addMaskNoise(const Instances& clean, const MaskNoise& noise, int frame
 MaskFileSegmenter::MaskFileSegmenter(const fs::path& sequence_dir, const MaskNoise& noise)
     : dir_(sequence_dir), noise_(noise) {
   if (!fs::is_directory(dir_ / "masks"))
-    throw InputError((dir_ / "masks").string(), "mask folder not found (needed by --segmenter masks)");
+    throw InputError((dir_ / "masks").string(),
+                     "mask folder not found (needed by --segmenter masks)");
   classes_ = readMaskClasses(dir_ / "masks.json");
 }
 
 Instances MaskFileSegmenter::segment(const RgbdFrame& frame) {
   const std::string stem = fs::path(frame.rgb_path).stem().string();
-  if (stem.empty()) throw InputError(dir_.string(), "the masks segmenter needs frames read from files");
+  if (stem.empty())
+    throw InputError(dir_.string(), "the masks segmenter needs frames read from files");
   const Instances clean = readMaskPng(dir_ / "masks" / (stem + ".png"), classes_, frame.bgr.size());
   return addMaskNoise(clean, noise_, frame.index);
 }

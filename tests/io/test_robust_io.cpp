@@ -73,6 +73,11 @@ TEST(RobustIo, TruncatedAndEmptyImagesAreRefused) {
   EXPECT_EQ(imageBytesProblem(png), "");
   EXPECT_EQ(imageBytesProblem(jpg), "");
   EXPECT_EQ(imageBytesProblem({}), "zero bytes");
+  // Other formats never reach OpenCV's decoders (a DICOM named .png aborted inside GDCM).
+  auto dicom = std::vector<unsigned char>(128, 0);
+  dicom.insert(dicom.end(), {'D', 'I', 'C', 'M'});
+  EXPECT_EQ(imageBytesProblem(dicom), "not a PNG or JPEG image");
+  EXPECT_EQ(imageBytesProblem(encode(".bmp", texture())), "not a PNG or JPEG image");
   EXPECT_NE(imageBytesProblem({png.begin(), png.begin() + png.size() / 2}).find("truncated PNG"),
             std::string::npos);
   EXPECT_NE(

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "core/error.hpp"
+#include "perception/mask_files.hpp"
 #include "perception/model_files.hpp"
 #include "support/test_support.hpp"
 
@@ -35,6 +36,26 @@ TEST(ModelFileCheck, EmptyOrWrongChecksumIsRefused) {
   EXPECT_NE(errorOf([&] { requireModelFile(dir, model_files::kCocoNames); }).find("empty"),
             std::string::npos);
   EXPECT_NO_THROW(requireModelFile(dir, "other.bin"));  // no pinned checksum: size only
+}
+
+}  // namespace
+}  // namespace dynanav
+
+namespace dynanav {
+namespace {
+
+// fuzz_mask_png's finding: a DICOM header in a file named .png made cv::imread hand it to GDCM,
+// which aborted the process. Now it is refused before any decoder sees it.
+TEST(MaskFileCheck, NonPngBytesNamedPngAreRefusedNotDecoded) {
+  const fs::path dir = test::scratchDir("dicom_png");
+  std::string bytes = "\x89PNG\r\n\x1a/";
+  bytes.resize(128, '\0');
+  bytes += "DICM";
+  bytes.resize(135, '\x35');
+  std::ofstream(dir / "mask.png", std::ios::binary) << bytes;
+  const std::string what = errorOf([&] { readMaskPng(dir / "mask.png", {}); });
+  EXPECT_NE(what.find("mask.png"), std::string::npos) << what;
+  EXPECT_NE(what.find("not a PNG or JPEG"), std::string::npos) << what;
 }
 
 }  // namespace
