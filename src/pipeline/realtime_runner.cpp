@@ -16,8 +16,9 @@ struct Arrival {
 };
 }  // namespace
 
-void runRealtime(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
-                 RunSummary& summary, const RealtimeOptions& options) {
+void runRealtime(FrameSource& source, const ProcessFrame& process,
+                 const std::vector<FrameSink*>& sinks, RunSummary& summary,
+                 const RealtimeOptions& options) {
   FrameQueue<Arrival> queue(options.queue_frames,
                             options.paced ? QueueFullPolicy::kDropOldest : QueueFullPolicy::kBlock);
   const Clock::time_point start = Clock::now();
@@ -41,7 +42,7 @@ void runRealtime(FrameSource& source, System& system, const std::vector<FrameSin
   });
   try {
     while (auto item = queue.pop()) {
-      FrameResult result = system.process(item->frame);
+      FrameResult result = process(item->frame);
       result.arrival_s = std::chrono::duration<double>(item->arrival - start).count();
       result.latency_ms =
           std::chrono::duration<double, std::milli>(Clock::now() - item->arrival).count();

@@ -59,7 +59,8 @@ RunSummary runSequence(const RunOptions& options) {
   const RunConfig& run = options.config.run;
   const auto start = std::chrono::steady_clock::now();
   if (run.realtime)
-    runRealtime(source, system, sinks, summary, {run.paced, size_t(std::max(1, run.queue_frames))});
+    runRealtime(source, [&system](const RgbdFrame& f) { return system.process(f); }, sinks, summary,
+                {run.paced, size_t(std::max(1, run.queue_frames))});
   else
     runInOrder(source, system, sinks, summary);
   system.finish();
