@@ -8,6 +8,7 @@
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "pipeline/run_sequence.hpp"
 
 namespace dynanav::cli {
@@ -66,7 +67,10 @@ int runCommand(const RunFlags& flags) {
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
   if (flags.quiet) spdlog::set_level(spdlog::level::warn);
   options.progress = !flags.quiet && isatty(STDERR_FILENO);
+  installInterruptHandlers();
   const RunSummary summary = runSequence(options);
+  if (summary.interrupted_by_signal)
+    return 128 + summary.interrupted_by_signal;  // 130 SIGINT, 143 SIGTERM
   if (!summary.initialised) {
     spdlog::error("tracking never initialised: no frame had enough keypoints with valid depth");
     return kExitNotInitialised;

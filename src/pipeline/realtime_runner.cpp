@@ -4,6 +4,7 @@
 #include <exception>
 #include <thread>
 
+#include "core/interrupt.hpp"
 #include "pipeline/frame_queue.hpp"
 
 namespace dynanav {
@@ -26,7 +27,8 @@ void runRealtime(FrameSource& source, const ProcessFrame& process,
   std::thread camera([&] {
     try {
       double first_stamp_s = -1.0;
-      for (auto frame = source.next(); frame && !queue.closed(); frame = source.next()) {
+      for (auto frame = source.next(); frame && !queue.closed() && !interruptRequested();
+           frame = source.next()) {
         if (options.paced) {  // a camera delivers at its frame times, whatever we do
           if (first_stamp_s < 0) first_stamp_s = frame->stamp_s;
           std::this_thread::sleep_until(

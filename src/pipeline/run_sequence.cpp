@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/realtime_runner.hpp"
 #include "pipeline/system.hpp"
@@ -18,7 +19,7 @@ namespace {
 /// Deterministic mode: every frame in order on this thread.
 void runInOrder(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
                 RunSummary& summary) {
-  while (auto frame = source.next()) {
+  for (auto frame = source.next(); frame && !interruptRequested(); frame = source.next()) {
     const auto arrival = std::chrono::steady_clock::now();
     FrameResult result = system.process(*frame);
     result.latency_ms = msSince(arrival);
@@ -67,6 +68,10 @@ RunSummary runSequence(const RunOptions& options) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.skipped = source.skipped();
+  summary.interrupted_by_signal = interruptSignal();
+  if (summary.interrupted_by_signal)
+    spdlog::warn("interrupted by signal {} after {} frames: writing what the run has",
+                 summary.interrupted_by_signal, summary.frames);
   summary.initialised = system.slam().numKeyFrames() > 0;
   const RunEnd end{system, summary, wall_s, modeName(run)};
   for (FrameSink* sink : sinks) sink->finish(end);

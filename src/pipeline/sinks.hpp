@@ -21,6 +21,7 @@ struct RunSummary {
   int skipped = 0;     ///< unreadable frames (the source's count)
   size_t dropped = 0;  ///< real time: frames dropped because the system was behind
   bool initialised = false;
+  int interrupted_by_signal = 0;  ///< SIGINT/SIGTERM/SIGHUP ended the run early (0 = ran to the end)
   std::vector<int> relocalisation_frames;  ///< input frames on which tracking came back (issue 4)
   void add(const FrameResult& result);
 };

@@ -104,6 +104,7 @@ void StatsSink::finish(const RunEnd& end) {
   const size_t offered = s.frames + s.dropped;
   nlohmann::json stats = {
       {"mode", end.mode},
+      {"interrupted", s.interrupted_by_signal != 0},
       {"frames", s.frames},
       {"tracked", s.tracked},
       {"lost", s.lost},
