@@ -42,6 +42,7 @@ class AsyncSegmenter final : public Segmenter {
 
   std::unique_ptr<Segmenter> inner_;
   StageTimers* timers_;
+  int nice_;
   MaskPropagator propagator_;             // used by the caller's thread only
   std::map<std::string, double> timing_;  // the caller's last propagation
   mutable std::mutex mutex_;

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <opencv2/core/utility.hpp>
+
 #include <chrono>
 #include <fstream>
 #include <memory>
@@ -49,6 +51,11 @@ RunSummary runSequence(const RunOptions& options) {
   spdlog::info("sequence {}: {} frames, camera {} (from {})", source.describe(),
                source.sequence().size(), source.camera().name, source.sequence().cameraSource());
 
+  const RunConfig& run = options.config.run;
+  // Real time: our threads are the parallelism (segmenter, tracking, mapping); OpenCV's pool
+  // threads would compete with tracking at its priority. Deterministic mode keeps OpenCV's default.
+  if (run.realtime && run.realtime_opencv_threads > 0)
+    cv::setNumThreads(run.realtime_opencv_threads);
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
@@ -57,7 +64,6 @@ RunSummary runSequence(const RunOptions& options) {
   if (options.progress) sinks.push_back(&progress);
 
   RunSummary summary;
-  const RunConfig& run = options.config.run;
   const auto start = std::chrono::steady_clock::now();
   if (run.realtime)
     runRealtime(source, [&system](const RgbdFrame& f) { return system.process(f); }, sinks, summary,

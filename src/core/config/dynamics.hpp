@@ -23,7 +23,8 @@ struct DynamicsConfig {
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
       "classes that may move: their keypoints never enter the initial pose estimate or the map");
     v("prior_mask_dilate_px", prior_mask_dilate_px,
@@ -35,29 +36,39 @@ struct DynamicsConfig {
     v("depth_diff_min_m", depth_diff_min_m,
       "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint");
     v("depth_diff_per_z2", depth_diff_per_z2,
-      "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with z^2)");
+      "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with "
+      "z^2)");
     v("instance_dynamic_share", instance_dynamic_share,
       "an instance moves when this share of its checked keypoints fails the depth test");
-    v("instance_min_points", instance_min_points, "fewest checked keypoints for an instance verdict");
+    v("instance_min_points", instance_min_points,
+      "fewest checked keypoints for an instance verdict");
     v("scene_flow_point_m", scene_flow_point_m,
-      "scene flow: a point moves if it moved more than this (m) between frames after ego-motion (paper: 0.02)");
+      "scene flow: a point moves if it moved more than this (m) between frames after ego-motion "
+      "(paper: 0.02)");
     v("scene_flow_share", scene_flow_share,
-      "scene flow: an object is dynamic when more than this share of its points moves (paper: 30 %)");
-    v("scene_flow_min_points", scene_flow_min_points, "fewest tracked points for a scene-flow verdict");
+      "scene flow: an object is dynamic when more than this share of its points moves (paper: 30 "
+      "%)");
+    v("scene_flow_min_points", scene_flow_min_points,
+      "fewest tracked points for a scene-flow verdict");
     v("scene_flow_gap_frames", scene_flow_gap_frames,
-      "scene flow is measured between a frame and the one this many frames earlier (a box pushed at "
+      "scene flow is measured between a frame and the one this many frames earlier (a box pushed "
+      "at "
       "0.5 m/s moves only 1.7 cm per frame at 30 Hz, under the 0.02 m threshold)");
     v("scene_flow_mean_check", scene_flow_mean_check,
       "scene flow: the object's mean displacement vector must also exceed scene_flow_point_m "
       "(depth noise moves single points, not the mean)");
     v("cull_vanished_points", cull_vanished_points,
-      "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is gone: "
-      "it lay on something that moved, and is removed from the map (off: on Bonn crowd it cost accuracy, "
+      "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is "
+      "gone: "
+      "it lay on something that moved, and is removed from the map (off: on Bonn crowd it cost "
+      "accuracy, "
       "0.0191 -> 0.0247 m, docs/dynamics.md)");
     v("cull_moving_object_points", cull_moving_object_points,
-      "map points matched on an object voted moving (depth vote or scene flow) are removed from the map: "
+      "map points matched on an object voted moving (depth vote or scene flow) are removed from "
+      "the map: "
       "they were mapped while it stood still and are no longer where the map says");
-    v("sample_step_px", sample_step_px, "object points are sampled every this many pixels in the mask");
+    v("sample_step_px", sample_step_px,
+      "object points are sampled every this many pixels in the mask");
   }
 };
 

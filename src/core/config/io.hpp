@@ -9,7 +9,8 @@ namespace dynanav {
 /// Reading sequences.
 struct IoConfig {
   double max_association_dt_s = 0.02;  // colour/depth pairs further apart are not associated
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("max_association_dt_s", max_association_dt_s,
       "largest colour-depth timestamp gap accepted when associating (s), as TUM's associate.py");
   }

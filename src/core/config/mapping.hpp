@@ -21,7 +21,8 @@ struct MappingConfig {
   int redundant_min_observers = 3;
   int queue_capacity = 3;
   int final_ba_iterations = 10;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("covisibility_min_weight", covisibility_min_weight,
       "shared map points for two keyframes to count as covisible");
     v("triangulation_neighbours", triangulation_neighbours,

@@ -13,7 +13,8 @@ struct OrbConfig {
   int n_levels = 8;
   int fast_threshold_initial = 20;
   int fast_threshold_min = 7;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("n_features", n_features, "ORB features per frame");
     v("scale_factor", scale_factor, "scale between pyramid levels");
     v("n_levels", n_levels, "pyramid levels");

@@ -15,6 +15,7 @@ struct RunConfig {
   bool realtime = false;
   bool paced = true;
   int queue_frames = 2;
+  int realtime_opencv_threads = 1;
   int max_frames = 0;
   template <class V>
   void visit(V&& v) {
@@ -30,6 +31,10 @@ struct RunConfig {
     v("queue_frames", queue_frames,
       "real time: frames that may wait for processing; when full the oldest is dropped (paced) or "
       "the source waits (unpaced)");
+    v("realtime_opencv_threads", realtime_opencv_threads,
+      "real time: OpenCV's worker threads (1 = none: every stage runs single-threaded in its own "
+      "thread, no pool "
+      "threads compete with tracking; 0 = OpenCV's default)");
     v("max_frames", max_frames, "process at most this many frames (0 = all)");
   }
 };

@@ -27,7 +27,8 @@ struct TrackingConfig {
   int keyframe_close_untracked_max = 70;
   int new_points_min = 100;
   double rolling_shutter_readout_ms = -1.0;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored");
     v("init_min_depth_features", init_min_depth_features,
       "keypoints with valid depth needed to initialise the map from one frame");
