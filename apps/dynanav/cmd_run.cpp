@@ -26,6 +26,7 @@ struct RunFlags {
   bool deterministic = false;
   bool realtime = false;
   bool unpaced = false;
+  int passes = 1;
   int max_frames = 0;
   bool quiet = false;
 };
@@ -54,6 +55,9 @@ int runCommand(const RunFlags& flags) {
   }
   // A config file may ask for real time; deterministic mode means one thread, so both agree.
   if (options.config.run.realtime && !flags.deterministic) options.config.run.deterministic = false;
+  if (flags.passes < 1)
+    throw InputError("--passes", "must be at least 1, got " + std::to_string(flags.passes));
+  options.passes = flags.passes;
   if (flags.max_frames < 0) throw InputError("", "--max-frames must be >= 0");
   if (flags.max_frames > 0) options.config.run.max_frames = flags.max_frames;
   options.max_frames = options.config.run.max_frames;
@@ -108,6 +112,9 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_flag("--unpaced", flags->unpaced,
                 "with --realtime: frames as fast as they are processed, none dropped");
   sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)");
+  sub->add_option("--passes", flags->passes,
+                  "play the sequence N times in a row, time running on (a long-run test; "
+                  "relocalises at each restart)");
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");

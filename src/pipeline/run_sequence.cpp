@@ -39,7 +39,7 @@ std::string modeName(const RunConfig& run) {
 
 RunSummary runSequence(const RunOptions& options) {
   SequenceSource source({options.sequence_dir, options.config.io, options.fallback_camera,
-                         options.blackout, options.max_frames});
+                         options.blackout, options.max_frames, options.passes});
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec)
