@@ -66,6 +66,19 @@ void AsyncSegmenter::work() {
 }
 
 Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
+  if (!started_) {
+    // The first frame is segmented here, before the worker has anything: SLAM initialises its
+    // map from this frame, and must not take the people in it for scenery.
+    started_ = true;
+    Instances first;
+    {
+      std::optional<ScopedTimer> timer;
+      if (timers_) timer.emplace(*timers_, "segmenter_thread");
+      first = inner_->segment(frame);
+    }
+    propagator_.setReference(frame, first);
+    return first;
+  }
   std::optional<Result> result;
   {
     std::lock_guard lock(mutex_);
