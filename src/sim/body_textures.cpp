@@ -75,7 +75,7 @@ cv::Mat faceTexture(cv::Size size, const BodyColours& colours, Rng& rng) {
   // Hair: the crown, and the back of the head down to the nape (or further for long hair);
   // the hairline over the forehead is a soft arc.
   cv::Mat hair_mask(size, CV_8U, cv::Scalar(0));
-  const int crown = int(0.27 * H);
+  const int crown = int(0.31 * H);
   cv::rectangle(hair_mask, cv::Rect(0, 0, W, crown), 255, cv::FILLED);
   cv::ellipse(hair_mask, {cx, crown}, {int(1.25 * fw), int(0.07 * H)}, 0, 0, 180, 255, cv::FILLED,
               cv::LINE_AA);
@@ -145,7 +145,7 @@ cv::Mat garmentTexture(cv::Size size, const cv::Scalar& colour, int pattern, Rng
   // Weave grain and soft folds (vertical creases): the light varies as on real cloth.
   cv::Mat folds = fractalNoise(size, 40.0f, 2, rng);
   cv::Mat grain = fractalNoise(size, 2.0f, 1, rng);
-  const float grain_amp = pattern == 3 ? 0.18f : 0.06f;
+  const float grain_amp = pattern == 3 ? 0.1f : 0.05f;
   for (int y = 0; y < size.height; ++y) {
     cv::Vec3b* row = img.ptr<cv::Vec3b>(y);
     const float* f = folds.ptr<float>(y);

@@ -9,7 +9,7 @@ namespace dynanav::sim {
 namespace {
 // Joint heights and segment lengths (m) for a 1.75 m adult; every person is scaled by a random
 // factor. Profiles are (y, radius_x, radius_z) from top to bottom (Mesh::addLathe).
-constexpr float kHipY = 0.93f, kHipX = 0.09f, kShoulderY = 1.43f, kShoulderX = 0.195f;
+constexpr float kHipY = 0.93f, kHipX = 0.09f, kShoulderY = 1.42f, kShoulderX = 0.19f;
 constexpr float kThigh = 0.43f, kShin = 0.42f, kUpperArm = 0.29f, kForearm = 0.25f;
 constexpr float kHeadCentreY = 1.665f;
 constexpr int kSides = 16;
@@ -85,11 +85,13 @@ Person::Person(World& world, Rng& rng, float tpm) {
   addPart(*body, scaled({{1.61f, 0.05f, 0.05f}, {1.47f, 0.058f, 0.056f}}, s), skin, tpm,
           translate(Vec3f(0, 0, -0.01f * s)));
   addPart(*body,
-          scaled({{1.505f, 0.06f, 0.05f},
-                  {1.49f, 0.14f, 0.085f},
-                  {1.455f, 0.188f, 0.105f},
-                  {1.39f, 0.195f, 0.115f},
-                  {1.25f, 0.177f, 0.12f},
+          // Shoulders slope down from the collar, as people's do; a square top reads as a box.
+          scaled({{1.53f, 0.055f, 0.05f},
+                  {1.515f, 0.09f, 0.07f},
+                  {1.49f, 0.14f, 0.09f},
+                  {1.455f, 0.175f, 0.105f},
+                  {1.40f, 0.188f, 0.115f},
+                  {1.25f, 0.172f, 0.12f},
                   {1.10f, 0.157f, 0.105f},
                   {0.99f, 0.163f, 0.103f},
                   {0.96f, 0.166f, 0.104f}},
@@ -206,7 +208,7 @@ void Person::draw(const BodyPose& pose, uint16_t id, std::vector<DrawItem>& out)
     const float swing = pose.pushing ? arm : -sign * arm;  // arms swing against the legs
     // Arms hang a little away from the body (abduction) so the hands clear the hips.
     const Pose3f shoulder = translate(Vec3f(sign * kShoulderX * s, kShoulderY * s, 0)) *
-                            rotZ(sign * 0.07f) * rotX(-swing);
+                            rotZ(sign * 0.11f) * rotX(-swing);
     add(side == 0 ? kUpperArmL : kUpperArmR, shoulder);
     const float elbow = pose.pushing ? 0.2f : 0.15f + 0.35f * std::max(0.0f, swing);
     add(side == 0 ? kForearmL : kForearmR,
