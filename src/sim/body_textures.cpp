@@ -38,7 +38,7 @@ BodyColours randomBodyColours(Rng& rng) {
                 rng);
   c.hair = pick(std::array<cv::Scalar, 6>{cv::Scalar(20, 22, 26), cv::Scalar(25, 35, 50),
                                           cv::Scalar(30, 50, 80), cv::Scalar(55, 90, 130),
-                                          cv::Scalar(90, 140, 180), cv::Scalar(150, 150, 155)},
+                                          cv::Scalar(90, 140, 180), cv::Scalar(190, 192, 196)},
                 rng);
   c.shirt = pick(std::array<cv::Scalar, 12>{cv::Scalar(235, 235, 235), cv::Scalar(220, 190, 160),
                                             cv::Scalar(110, 60, 30), cv::Scalar(120, 120, 120),
