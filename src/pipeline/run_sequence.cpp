@@ -10,8 +10,10 @@
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "io/json_io.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/realtime_runner.hpp"
+#include "pipeline/run_outputs.hpp"
 #include "pipeline/system.hpp"
 #include "slam/slam_system.hpp"
 
@@ -44,10 +46,9 @@ RunSummary runSequence(const RunOptions& options) {
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec)
     throw InputError(options.out_dir.string(), "cannot create output folder: " + ec.message());
-  {
-    std::ofstream config_out(options.out_dir / "config_used.yaml");
-    config_out << options.config.toYaml();
-  }
+  if (const int removed = removeEarlierRunOutputs(options.out_dir); removed > 0)
+    spdlog::info("{}: replaced {} files of an earlier run", options.out_dir.string(), removed);
+  writeTextFile(options.out_dir / "config_used.yaml", options.config.toYaml());
   spdlog::info("sequence {}: {} frames, camera {} (from {})", source.describe(),
                source.sequence().size(), source.camera().name, source.sequence().cameraSource());
 
