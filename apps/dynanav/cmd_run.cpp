@@ -8,6 +8,7 @@
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "pipeline/run_sequence.hpp"
 
 namespace dynanav::cli {
@@ -25,6 +26,7 @@ struct RunFlags {
   bool deterministic = false;
   bool realtime = false;
   bool unpaced = false;
+  int passes = 1;
   int max_frames = 0;
   bool quiet = false;
 };
@@ -53,6 +55,9 @@ int runCommand(const RunFlags& flags) {
   }
   // A config file may ask for real time; deterministic mode means one thread, so both agree.
   if (options.config.run.realtime && !flags.deterministic) options.config.run.deterministic = false;
+  if (flags.passes < 1)
+    throw InputError("--passes", "must be at least 1, got " + std::to_string(flags.passes));
+  options.passes = flags.passes;
   if (flags.max_frames < 0) throw InputError("--max-frames", "must be >= 0");
   if (flags.max_frames > 0) options.config.run.max_frames = flags.max_frames;
   options.max_frames = options.config.run.max_frames;
@@ -70,7 +75,10 @@ int runCommand(const RunFlags& flags) {
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
   if (flags.quiet) spdlog::set_level(spdlog::level::warn);
   options.progress = !flags.quiet && isatty(STDERR_FILENO);
+  installInterruptHandlers();
   const RunSummary summary = runSequence(options);
+  if (summary.interrupted_by_signal)
+    return 128 + summary.interrupted_by_signal;  // 130 SIGINT, 143 SIGTERM
   if (summary.frames == 0)
     throw InputError(flags.sequence_dir, "no frame could be read: all " +
                                              std::to_string(summary.skipped) +
@@ -117,6 +125,10 @@ void registerRun(CLI::App& root, Action& chosen) {
                 "with --realtime: frames as fast as they are processed, none dropped");
   sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)")
       ->check(finiteRange(0, 2147483647));
+  sub->add_option("--passes", flags->passes,
+                  "play the sequence N times in a row, time running on (a long-run test; "
+                  "relocalises at each restart)")
+      ->check(finiteRange(1, 1000000));
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");

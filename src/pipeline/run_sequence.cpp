@@ -2,11 +2,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include <opencv2/core/utility.hpp>
+
 #include <chrono>
 #include <fstream>
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "io/json_io.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/realtime_runner.hpp"
@@ -20,7 +23,7 @@ namespace {
 /// Deterministic mode: every frame in order on this thread.
 void runInOrder(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
                 RunSummary& summary) {
-  while (auto frame = source.next()) {
+  for (auto frame = source.next(); frame && !interruptRequested(); frame = source.next()) {
     const auto arrival = std::chrono::steady_clock::now();
     FrameResult result = system.process(*frame);
     result.latency_ms = msSince(arrival);
@@ -38,7 +41,7 @@ std::string modeName(const RunConfig& run) {
 
 RunSummary runSequence(const RunOptions& options) {
   SequenceSource source({options.sequence_dir, options.config.io, options.fallback_camera,
-                         options.blackout, options.max_frames});
+                         options.blackout, options.max_frames, options.passes});
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec)
@@ -49,6 +52,11 @@ RunSummary runSequence(const RunOptions& options) {
   spdlog::info("sequence {}: {} frames, camera {} (from {})", source.describe(),
                source.sequence().size(), source.camera().name, source.sequence().cameraSource());
 
+  const RunConfig& run = options.config.run;
+  // Real time: our threads are the parallelism (segmenter, tracking, mapping); OpenCV's pool
+  // threads would compete with tracking at its priority. Deterministic mode keeps OpenCV's default.
+  if (run.realtime && run.realtime_opencv_threads > 0)
+    cv::setNumThreads(run.realtime_opencv_threads);
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
@@ -57,16 +65,20 @@ RunSummary runSequence(const RunOptions& options) {
   if (options.progress) sinks.push_back(&progress);
 
   RunSummary summary;
-  const RunConfig& run = options.config.run;
   const auto start = std::chrono::steady_clock::now();
   if (run.realtime)
-    runRealtime(source, system, sinks, summary, {run.paced, size_t(std::max(1, run.queue_frames))});
+    runRealtime(source, [&system](const RgbdFrame& f) { return system.process(f); }, sinks, summary,
+                {run.paced, size_t(std::max(1, run.queue_frames))});
   else
     runInOrder(source, system, sinks, summary);
   system.finish();
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.skipped = source.skipped();
+  summary.interrupted_by_signal = interruptSignal();
+  if (summary.interrupted_by_signal)
+    spdlog::warn("interrupted by signal {} after {} frames: writing what the run has",
+                 summary.interrupted_by_signal, summary.frames);
   summary.initialised = system.slam().numKeyFrames() > 0;
   const RunEnd end{system, summary, wall_s, modeName(run)};
   for (FrameSink* sink : sinks) sink->finish(end);

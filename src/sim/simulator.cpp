@@ -102,6 +102,7 @@ SimFrame Simulator::render(int i) {
     for (int x = 0; x < f.instance.cols; ++x) ++pixels[row[x]];
   }
   const SE3 T_camera_world = f.T_world_camera.inverse();
+  if (options_.readout_s > 0.0) drawItems(i, items_);  // the bands left the last band's scene
   nlohmann::json objects = nlohmann::json::array();
   for (const Mover& m : scene_->movers) {
     const Vec3 p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
@@ -121,10 +122,30 @@ SimFrame Simulator::render(int i) {
                        {"clock", clock == 0 ? 12 : clock},
                        {"velocity_world", vec(v_world)},
                        {"speed", round6(speed)},
-                       {"points", pixels[m.id]}});
+                       {"points", pixels[m.id]},
+                       {"in_view", round6(inViewShare(m.id, pixels[m.id], T_camera_world))}});
   }
   f.objects = {{"t", f.stamp_s}, {"objects", objects}};
   return f;
+}
+
+double Simulator::inViewShare(uint16_t id, int visible_px, const SE3& T_camera_world) {
+  if (visible_px == 0) return 0.0;
+  // The object alone, seen by a camera with the same centre and orientation but three times
+  // the field of view each way at a third of the resolution: its whole silhouette (unless it
+  // is closer than about 0.4 m) without occluders, in pixels of the real image (x 9).
+  silhouette_items_.clear();
+  for (const DrawItem& item : items_)
+    if (item.instance_id == id) silhouette_items_.push_back(item);
+  PinholeCamera wide = camera_;
+  wide.fx = wide.fy = camera_.fx / 3.0;
+  wide.cx = (camera_.cx + camera_.width) / 3.0;
+  wide.cy = (camera_.cy + camera_.height) / 3.0;
+  RenderBuffers alone;
+  rasterizer_.render(wide, T_camera_world.cast<float>(), silhouette_items_, scene_->world.textures,
+                     alone);
+  const double silhouette_px = 9.0 * cv::countNonZero(alone.instance == id);
+  return silhouette_px > 0.0 ? std::min(1.0, visible_px / silhouette_px) : 0.0;
 }
 
 void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting,

@@ -35,9 +35,10 @@ struct PerceptionConfig {
   double depth_bin_m = 0.05;
 
   // Keypoints (MoveNet Lightning per person box).
-  bool keypoints = true;
+  bool keypoints = false;
   double keypoint_crop_scale = 1.15;
   bool parallel_person_models = true;
+  int segmenter_nice = 10;
 
   // Propagation between segmented frames (DIS optical flow).
   double flow_scale = 0.5;
@@ -82,7 +83,13 @@ struct PerceptionConfig {
       Range{0, 100, Range::kOpenLow});
     v("depth_bin_m", depth_bin_m, "histogram bin for the depth mode (m)",
       Range{0, 10, Range::kOpenLow});
-    v("keypoints", keypoints, "run MoveNet on person boxes (shoulders, hips)");
+    v("keypoints", keypoints,
+      "run MoveNet on person boxes (shoulders, hips); off by default: no stage of `run` needs "
+      "them and they cost ~30 % of dnn segmentation (docs/pipeline.md)");
+    v("segmenter_nice", segmenter_nice,
+      "real time: nice value of the segmenter thread (higher = yields to tracking, which must "
+      "keep up)",
+      Range{0, 19});
     v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet",
       Range{1, 4});
     v("parallel_person_models", parallel_person_models,

@@ -18,6 +18,7 @@ struct RunConfig {
   bool realtime = false;
   bool paced = true;
   int queue_frames = 2;
+  int realtime_opencv_threads = 1;
   int max_frames = 0;
   template <class V>
   void visit(V&& v) {
@@ -36,6 +37,10 @@ struct RunConfig {
       "real time: frames that may wait for processing; when full the oldest is dropped (paced) or "
       "the source waits (unpaced)",
       Range{1, 1000});
+    v("realtime_opencv_threads", realtime_opencv_threads,
+      "real time: OpenCV's worker threads (1 = none: every stage runs single-threaded in its own "
+      "thread, no pool threads compete with tracking; 0 = OpenCV's default)",
+      Range{0, 256});
     v("max_frames", max_frames, "process at most this many frames (0 = all)", Range{0, 2147483647});
   }
 };
