@@ -10,6 +10,7 @@ using Action = std::function<int()>;
 
 void registerRun(CLI::App& root, Action& chosen);         // cmd_run.cpp
 void registerEval(CLI::App& root, Action& chosen);        // cmd_eval.cpp
+void registerEvalObjects(CLI::App& root, Action& chosen); // cmd_eval_objects.cpp
 void registerSimulate(CLI::App& root, Action& chosen);    // cmd_simulate.cpp
 void registerSegment(CLI::App& root, Action& chosen);     // cmd_segment.cpp
 void registerVocabulary(CLI::App& root, Action& chosen);  // cmd_vocabulary.cpp

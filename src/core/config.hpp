@@ -14,6 +14,7 @@ struct Config {
   LoopConfig loop;
   PerceptionConfig perception;
   DynamicsConfig dynamics;
+  ObjectTrackingConfig objects;
   RunConfig run;
 
   template <class V> void visitSections(V&& v) {
@@ -24,6 +25,7 @@ struct Config {
     v("loop", loop);
     v("perception", perception);
     v("dynamics", dynamics);
+    v("objects", objects);
     v("run", run);
   }
 

@@ -4,17 +4,10 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "io/objects_jsonl.hpp"
 
 namespace dynanav::sim {
 
-namespace {
-double round6(double v) {
-  return std::round(v * 1e6) / 1e6 + 0.0;
-}  // + 0.0: no "-0.0" in files
-nlohmann::json vec(const Vec3& v) {
-  return {round6(v.x()), round6(v.y()), round6(v.z())};
-}
-}  // namespace
 
 Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (!(options.fps > 0.0 && options.fps <= 1000.0))
@@ -102,29 +95,45 @@ SimFrame Simulator::render(int i) {
     for (int x = 0; x < f.instance.cols; ++x) ++pixels[row[x]];
   }
   const SE3 T_camera_world = f.T_world_camera.inverse();
-  nlohmann::json objects = nlohmann::json::array();
+  std::vector<TrackedObject> objects;
   for (const Mover& m : scene_->movers) {
-    const Vec3 p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
-    const Vec3 v_world = T_world_room_.linear() * scene_->moverVelocity(m, f.stamp_s);
-    const Vec3 p_camera = T_camera_world * p_world;
-    const double bearing_deg = std::atan2(p_camera.x(), p_camera.z()) * 180.0 / M_PI;
-    int clock = int(std::lround(bearing_deg / 30.0));
-    clock = ((clock % 12) + 12) % 12;
-    const double speed = v_world.norm();
-    objects.push_back({{"id", m.id},
-                       {"class", m.cls},
-                       {"dynamic", speed > 1e-6},
-                       {"position_world", vec(p_world)},
-                       {"position_camera", vec(p_camera)},
-                       {"distance", round6(p_camera.norm())},
-                       {"bearing_deg", round6(bearing_deg)},
-                       {"clock", clock == 0 ? 12 : clock},
-                       {"velocity_world", vec(v_world)},
-                       {"speed", round6(speed)},
-                       {"points", pixels[m.id]}});
+    TrackedObject& o = objects.emplace_back();
+    o.id = m.id;
+    o.class_name = m.cls;
+    o.p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
+    o.v_world_mps = T_world_room_.linear() * scene_->moverVelocity(m, f.stamp_s);
+    o.p_camera = T_camera_world * o.p_world;
+    fillViewGeometry(o);
+    o.dynamic = o.speed_mps > 1e-6;
+    o.points = pixels[m.id];
+    const int alone_px = unoccludedPixels(m.id, f.stamp_s, T_camera_world);
+    o.visible_share = alone_px > 0 ? std::min(1.0, double(o.points) / alone_px) : 0.0;
   }
-  f.objects = {{"t", f.stamp_s}, {"objects", objects}};
+  f.objects = objectsFrameJson(f.stamp_s, objects);
   return f;
+}
+
+int Simulator::unoccludedPixels(uint16_t mover_id, double stamp_s,
+                                const SE3& T_camera_world) const {
+  // The mover alone, at half resolution on a canvas three times the image's field of view in
+  // each direction (the image sits in its middle): what the camera would see of it with nothing
+  // in front and no image border. One half-size pixel stands for four of the image's.
+  std::vector<DrawItem> items;
+  drawItemsAt(stamp_s, items);
+  std::erase_if(items, [&](const DrawItem& d) { return d.instance_id != mover_id; });
+  if (items.empty()) return 0;
+  PinholeCamera wide = camera_;
+  wide.width = 3 * camera_.width / 2;
+  wide.height = 3 * camera_.height / 2;
+  wide.fx = camera_.fx / 2;
+  wide.fy = camera_.fy / 2;
+  wide.cx = (camera_.cx + 0.5) / 2 - 0.5 + camera_.width / 2.0;
+  wide.cy = (camera_.cy + 0.5) / 2 - 0.5 + camera_.height / 2.0;
+  wide.readout_s = 0.0;
+  Rasterizer rasterizer;
+  RenderBuffers buffers;
+  rasterizer.render(wide, T_camera_world.cast<float>(), items, scene_->world.textures, buffers);
+  return 4 * cv::countNonZero(buffers.instance == mover_id);
 }
 
 void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting,

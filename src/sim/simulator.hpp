@@ -42,7 +42,7 @@ struct SimFrame {
   cv::Mat depth_true_m;  ///< exact camera z of the visible surface (CV_32F, 0 = nothing)
   cv::Mat instance;      ///< CV_16U instance ids, 0 = background
   SE3 T_world_camera = SE3::Identity();
-  nlohmann::json objects;  ///< the objects_gt.jsonl record of this frame
+  nlohmann::json objects;  ///< the objects_gt.jsonl record of this frame (io/objects_jsonl)
 };
 
 class Simulator {
@@ -77,6 +77,10 @@ class Simulator {
   int frames_ = 0;
   /// Renders frame f's image band by band, each band from the pose and scene at its rows' time.
   void renderRollingShutter(const SimFrame& f, const Lighting& lighting, RenderBuffers& out);
+  /// Image pixels mover `mover_id` would cover with nothing in front and no image border
+  /// (the denominator of objects_gt.jsonl's visible_share).
+  [[nodiscard]] int unoccludedPixels(uint16_t mover_id, double stamp_s,
+                                     const SE3& T_camera_world) const;
   Rasterizer rasterizer_;
   std::vector<DrawItem> items_;
 };

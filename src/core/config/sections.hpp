@@ -9,4 +9,5 @@
 #include "core/config/loop.hpp"
 #include "core/config/perception.hpp"
 #include "core/config/dynamics.hpp"
+#include "core/config/objects.hpp"
 #include "core/config/run.hpp"
