@@ -108,4 +108,12 @@ std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth
   return surface + behind_m * surface.normalized();
 }
 
+double objectWidth(const std::vector<Vec3>& p_camera) {
+  if (p_camera.size() < 2) return 0.0;
+  std::vector<double> x;
+  for (const Vec3& p : p_camera) x.push_back(p.x());
+  std::sort(x.begin(), x.end());
+  return x[x.size() * 9 / 10] - x[x.size() / 10];
+}
+
 }  // namespace dynanav

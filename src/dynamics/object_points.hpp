@@ -38,4 +38,7 @@ float depthAt(const cv::Mat& depth_m, const cv::Point2f& pixel);
 std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth_band_m,
                                  double behind_m);
 
+/// Horizontal extent (m) of the points: the 10th to 90th percentile of camera x.
+double objectWidth(const std::vector<Vec3>& p_camera);
+
 }  // namespace dynanav

@@ -9,6 +9,13 @@
 namespace dynanav {
 namespace {
 
+/// How far the centre lies behind the visible surface: a person's half thickness (config); for
+/// other objects half their visible width (a box or chair is about as deep as it is wide).
+double behindSurface(const std::string& class_name, const std::vector<Vec3>& p_camera,
+                     const ObjectTrackingConfig& config) {
+  return class_name == "person" ? config.centre_behind_surface_m : 0.5 * objectWidth(p_camera);
+}
+
 bool contains(const std::vector<uint16_t>& sorted_ids, uint16_t id) {
   return std::binary_search(sorted_ids.begin(), sorted_ids.end(), id);
 }
@@ -198,17 +205,19 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   std::vector<Vec3> p_camera;
   p_camera.reserve(track.p_world.size());
   for (const Vec3& p : track.p_world) p_camera.push_back(T_camera_world * p);
-  if (const auto centre =
-          objectCentre(p_camera, config_.depth_band_m, config_.centre_behind_surface_m))
+  if (const auto centre = objectCentre(p_camera, config_.depth_band_m,
+                                       behindSurface(track.class_name, p_camera, config_)))
     track.filter.update(input.T_world_camera * *centre, v_measured);
   // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
   if (instance) {
     const bool moving = contains(input.dynamics.moving_ids, instance->id);
     track.still = moving ? 0 : track.still + 1;
-    if (contains(input.dynamics.static_ids, instance->id))
-      track.still = std::max(track.still, config_.static_after_frames);
   }
-  track.stationary = track.still >= config_.static_after_frames;
+  // Not found moving for a while and measured slow: static (a verdict that flickers off for a
+  // few frames of a walker does not stop it).
+  const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
+  track.stationary = verified_static || (track.still >= config_.static_after_frames &&
+                                         track.filter.velocity().norm() < config_.static_speed_mps);
   if (track.stationary) track.filter.holdStill();
 }
 
@@ -226,7 +235,8 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   const SE3 T_camera_world = input.T_world_camera.inverse();
   std::vector<Vec3> p_camera;
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
-  const auto centre = objectCentre(p_camera, config_.depth_band_m, config_.centre_behind_surface_m);
+  const auto centre = objectCentre(p_camera, config_.depth_band_m,
+                                   behindSurface(t.class_name, p_camera, config_));
   if (!centre) return std::nullopt;
   t.filter = KalmanCv(input.T_world_camera * *centre,
                       {config_.accel_sigma_mps2, config_.position_sigma_m,

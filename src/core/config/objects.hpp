@@ -12,7 +12,7 @@ struct ObjectTrackingConfig {
   int max_missed_frames = 15;
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
-  double centre_behind_surface_m = 0.1;
+  double centre_behind_surface_m = 0.15;
   int min_motion_points = 12;
   int ransac_iterations = 100;
   double ransac_reprojection_px = 2.0;
@@ -22,6 +22,7 @@ struct ObjectTrackingConfig {
   double position_sigma_m = 0.05;
   double velocity_sigma_mps = 0.3;
   int static_after_frames = 3;
+  double static_speed_mps = 0.25;
   double path_horizon_s = 3.0;
   double path_step_s = 0.5;
   template <class V> void visit(V&& v) {
@@ -38,7 +39,8 @@ struct ObjectTrackingConfig {
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id");
     v("depth_band_m", depth_band_m, "points farther than this (m) from the object's median depth are dropped");
     v("centre_behind_surface_m", centre_behind_surface_m,
-      "the object's centre lies this far (m) behind its visible surface, along the viewing ray");
+      "a person's centre lies this far (m) behind the visible surface, along the viewing ray (other "
+      "objects: half their visible width)");
     v("min_motion_points", min_motion_points, "fewest 3D-2D correspondences for a rigid-motion estimate");
     v("ransac_iterations", ransac_iterations, "EPnP-RANSAC iterations per object and frame");
     v("ransac_reprojection_px", ransac_reprojection_px, "EPnP-RANSAC inlier threshold (px)");
@@ -48,7 +50,9 @@ struct ObjectTrackingConfig {
     v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)");
     v("velocity_sigma_mps", velocity_sigma_mps, "Kalman filter: noise of the one-frame centroid velocity (m/s)");
     v("static_after_frames", static_after_frames,
-      "an object not found moving for this many frames in a row is static: velocity zero");
+      "an object not found moving for this many frames in a row, and measured slower than "
+      "static_speed_mps, is static: velocity zero");
+    v("static_speed_mps", static_speed_mps, "see static_after_frames (m/s)");
     v("path_horizon_s", path_horizon_s, "predicted path: how far ahead (s)");
     v("path_step_s", path_step_s, "predicted path: spacing of its points (s)");
   }
