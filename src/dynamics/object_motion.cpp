@@ -12,9 +12,10 @@ namespace {
 /// into the current camera.
 struct MovedPointCost {
   MovedPointCost(const Vec3& p_prev_world, const Eigen::Vector2d& pixel, const SE3& T_camera_world,
-                 const PinholeCamera& camera)
+                 const PinholeCamera& camera, double depth_m)
       : p(p_prev_world), uv(pixel), T(T_camera_world), fx(camera.fx), fy(camera.fy),
-        cx(camera.cx), cy(camera.cy) {}
+        cx(camera.cx), cy(camera.cy), z(depth_m),
+        inv_sigma_z(depth_m > 0.0 ? 1.0 / (0.01 + 0.003 * depth_m * depth_m) : 0.0) {}
 
   template <class S>
   bool operator()(const S* motion, S* residual) const {
@@ -28,6 +29,7 @@ struct MovedPointCost {
              S(T.linear()(r, 2)) * moved[2] + S(T.translation()(r));
     residual[0] = S(fx) * c[0] / c[2] + S(cx) - S(uv.x());
     residual[1] = S(fy) * c[1] / c[2] + S(cy) - S(uv.y());
+    residual[2] = S(inv_sigma_z) * (c[2] - S(z));
     return true;
   }
 
@@ -35,6 +37,7 @@ struct MovedPointCost {
   Eigen::Vector2d uv;
   SE3 T;
   double fx, fy, cx, cy;
+  double z, inv_sigma_z;
 };
 
 int countInliers(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen::Vector2d>& pixels,
@@ -55,7 +58,7 @@ int countInliers(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen:
 }
 
 SE3 refine(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen::Vector2d>& pixels,
-           const std::vector<uint8_t>& inlier, const SE3& T_camera_world,
+           const std::vector<double>& depth_m, const std::vector<uint8_t>& inlier, const SE3& T_camera_world,
            const PinholeCamera& camera, const SE3& H0, const ObjectMotionOptions& options) {
   double motion[6];
   const Eigen::AngleAxisd aa(H0.linear());
@@ -70,8 +73,9 @@ SE3 refine(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen::Vecto
   ceres::HuberLoss loss(options.huber_px);
   for (size_t i = 0; i < p_prev_world.size(); ++i) {
     if (!inlier[i]) continue;
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MovedPointCost, 2, 6>(
-                                 new MovedPointCost(p_prev_world[i], pixels[i], T_camera_world, camera)),
+    const double z = i < depth_m.size() ? depth_m[i] : 0.0;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MovedPointCost, 3, 6>(
+                                 new MovedPointCost(p_prev_world[i], pixels[i], T_camera_world, camera, z)),
                              &loss, motion);
   }
   ceres::Solver::Options solver;
@@ -98,7 +102,8 @@ Vec3 centroidDisplacement(const SE3& H_world, const Vec3& c_world) {
 ObjectMotion estimateObjectMotion(const std::vector<Vec3>& p_prev_world,
                                   const std::vector<Eigen::Vector2d>& pixels,
                                   const SE3& T_camera_world, const PinholeCamera& camera,
-                                  const SE3& prior, const ObjectMotionOptions& options) {
+                                  const SE3& prior, const ObjectMotionOptions& options,
+                                  const std::vector<double>& depth_m) {
   ObjectMotion out;
   const int n = static_cast<int>(p_prev_world.size());
   if (n < options.min_points || pixels.size() != p_prev_world.size()) return out;
@@ -130,7 +135,7 @@ ObjectMotion estimateObjectMotion(const std::vector<Vec3>& p_prev_world,
     }
   }
   if (inliers < options.min_points) return out;
-  H = refine(p_prev_world, pixels, inlier, T_camera_world, camera, H, options);
+  H = refine(p_prev_world, pixels, depth_m, inlier, T_camera_world, camera, H, options);
   out.inliers = countInliers(p_prev_world, pixels, T_camera_world * H, camera,
                              options.reprojection_px, out.inlier);
   out.H_world = H;

@@ -132,11 +132,22 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
                          const ObjectTrackerInput& input) const {
   track.pixels.clear();
   track.p_world.clear();
-  for (const cv::Point2f& px : pixels) {
-    const float z = depthAt(input.depth_m, px);
-    if (z <= 0.f) continue;
-    track.pixels.push_back(px);
-    track.p_world.push_back(input.T_world_camera * input.camera.backproject(px.x, px.y, z));
+  std::vector<float> z(pixels.size());
+  std::vector<float> valid;
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    z[i] = depthAt(input.depth_m, pixels[i]);
+    if (z[i] > 0.f) valid.push_back(z[i]);
+  }
+  if (valid.empty()) return;
+  // Pixels of a mask that spills over its outline see the background far behind: only points
+  // within depth_band_m of the object's median depth are the object's.
+  std::nth_element(valid.begin(), valid.begin() + long(valid.size() / 2), valid.end());
+  const float z_median = valid[valid.size() / 2];
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    if (z[i] <= 0.f || std::abs(z[i] - z_median) > float(config_.depth_band_m)) continue;
+    track.pixels.push_back(pixels[i]);
+    track.p_world.push_back(input.T_world_camera *
+                            input.camera.backproject(pixels[i].x, pixels[i].y, z[i]));
   }
 }
 
@@ -159,6 +170,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   const SE3 T_camera_world = input.T_world_camera.inverse();
   Carried kept;
   std::vector<cv::Point2f> kept_pixels;
+  std::vector<double> kept_depth_m;
   for (size_t i = 0; i < carried.pixels.size(); ++i) {
     const Eigen::Vector2d& px = carried.pixels[i];
     if (instance && labelAt(input.instances.labels, px) != instance->id) continue;
@@ -168,6 +180,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     kept.p_prev_world.push_back(carried.p_prev_world[i]);
     kept.pixels.push_back(px);
     kept_pixels.emplace_back(float(px.x()), float(px.y()));
+    kept_depth_m.push_back(z);
   }
   std::optional<Vec3> v_measured;
   if (dt > 0.0) {
@@ -180,7 +193,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     options.seed = uint64_t(input.frame_index) * 7919u + track.id;  // same run, same answer
     const ObjectMotion motion = estimateObjectMotion(kept.p_prev_world, kept.pixels,
                                                      T_camera_world, input.camera, track.motion,
-                                                     options);
+                                                     options, kept_depth_m);
     if (motion.ok) {
       Vec3 c = Vec3::Zero();
       for (size_t i = 0; i < motion.inlier.size(); ++i)
