@@ -226,11 +226,14 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool moving = contains(input.dynamics.moving_ids, instance->id);
     track.still = moving ? 0 : track.still + 1;
   }
-  // Not found moving for a while and measured slow: static (a verdict that flickers off for a
-  // few frames of a walker does not stop it).
+  // Not found moving for a while and measured slow, or not found moving for three times as
+  // long: static (a verdict that flickers off for a few frames of a walker does not stop it;
+  // a chair's noisy speed does not keep it moving).
   const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
-  track.stationary = verified_static || (track.still >= config_.static_after_frames &&
-                                         track.filter.velocity().norm() < config_.static_speed_mps);
+  const bool slow = track.filter.velocity().norm() < config_.static_speed_mps;
+  track.stationary = verified_static ||
+                     (track.still >= config_.static_after_frames &&
+                      (slow || track.still >= 3 * config_.static_after_frames));
   if (track.stationary) track.filter.holdStill();
 }
 

@@ -50,8 +50,8 @@ struct ObjectTrackingConfig {
     v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)");
     v("velocity_sigma_mps", velocity_sigma_mps, "Kalman filter: noise of the one-frame centroid velocity (m/s)");
     v("static_after_frames", static_after_frames,
-      "an object not found moving for this many frames in a row, and measured slower than "
-      "static_speed_mps, is static: velocity zero");
+      "an object not found moving for this many frames in a row and measured slower than "
+      "static_speed_mps (or not found moving for 3x as many frames) is static: velocity zero");
     v("static_speed_mps", static_speed_mps, "see static_after_frames (m/s)");
     v("path_horizon_s", path_horizon_s, "predicted path: how far ahead (s)");
     v("path_step_s", path_step_s, "predicted path: spacing of its points (s)");
