@@ -23,7 +23,8 @@ Scene twoPeople(int frame) {
     const cv::Rect box(xs[k] % 520, 140, 80, 200);
     for (int y = box.y; y < box.y + box.height; ++y)
       for (int x = box.x; x < box.x + box.width; ++x)
-        s.depth_m.at<float>(y, x) = zs[k] + 0.1f * float((x - box.x) % 11) / 11.f + 0.03f * float(y % 7) / 7.f;
+        s.depth_m.at<float>(y, x) =
+            zs[k] + 0.1f * float((x - box.x) % 11) / 11.f + 0.03f * float(y % 7) / 7.f;
     s.instances.labels(box).setTo(uint16_t(k + 1));
     Instance it;
     it.id = uint16_t(k + 1);
@@ -49,7 +50,8 @@ void BM_TrackTwoPeople(benchmark::State& state) {
   int i = 0;
   for (auto _ : state) {
     const Scene& s = scenes[size_t(i % 30)];
-    auto objects = tracker.track({i, i / 30.0, s.instances, dynamics, flow, s.depth_m, T, true, camera});
+    auto objects =
+        tracker.track({i, i / 30.0, s.instances, dynamics, flow, s.depth_m, T, true, camera});
     benchmark::DoNotOptimize(objects);
     ++i;
   }

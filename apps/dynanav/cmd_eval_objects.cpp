@@ -29,17 +29,22 @@ int speedBands(const EvalObjectsOptions& opt, const std::vector<ObjectsFrame>& e
   if (opt.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& s : shares)
-      out.push_back({{"id", s.id}, {"class", s.class_name}, {"frames", s.frames},
-                     {"dynamic_frames", s.dynamic_frames}, {"in_band", s.in_band},
-                     {"share", s.share()}, {"median_speed_mps", s.median_speed_mps}});
+      out.push_back({{"id", s.id},
+                     {"class", s.class_name},
+                     {"frames", s.frames},
+                     {"dynamic_frames", s.dynamic_frames},
+                     {"in_band", s.in_band},
+                     {"share", s.share()},
+                     {"median_speed_mps", s.median_speed_mps}});
     std::cout << nlohmann::json{{"speed_band", {lo, hi}}, {"tracks", out}}.dump(2) << std::endl;
     return kExitOk;
   }
   for (const auto& s : shares)
-    std::cout << fmt::format("track {:4d} {:8s} frames {:4d}  moving {:4d}  speed in [{}, {}] m/s: "
-                             "{:5.1f} %  median {:.2f} m/s\n",
-                             s.id, s.class_name, s.frames, s.dynamic_frames, lo, hi,
-                             100.0 * s.share(), s.median_speed_mps);
+    std::cout << fmt::format(
+        "track {:4d} {:8s} frames {:4d}  moving {:4d}  speed in [{}, {}] m/s: "
+        "{:5.1f} %  median {:.2f} m/s\n",
+        s.id, s.class_name, s.frames, s.dynamic_frames, lo, hi, 100.0 * s.share(),
+        s.median_speed_mps);
   return kExitOk;
 }
 
@@ -52,40 +57,51 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
   if (opt.json) {
     nlohmann::json objects = nlohmann::json::array();
     for (const ObjectScore& s : m.objects)
-      objects.push_back({{"id", s.gt_id}, {"class", s.class_name}, {"scored_frames", s.scored_frames},
-                         {"matched", s.matched}, {"recall", s.recall()}, {"id_switches", s.id_switches},
+      objects.push_back({{"id", s.gt_id},
+                         {"class", s.class_name},
+                         {"scored_frames", s.scored_frames},
+                         {"matched", s.matched},
+                         {"recall", s.recall()},
+                         {"id_switches", s.id_switches},
                          {"id_switches_per_100", s.switchesPer100()},
-                         {"position_rmse_m", s.position_rmse_m}, {"speed_rmse_mps", s.speed_rmse_mps},
-                         {"velocity_rmse_mps", s.velocity_rmse_mps}, {"moving_frames", s.moving_frames},
+                         {"position_rmse_m", s.position_rmse_m},
+                         {"speed_rmse_mps", s.speed_rmse_mps},
+                         {"velocity_rmse_mps", s.velocity_rmse_mps},
+                         {"moving_frames", s.moving_frames},
                          {"speed_rmse_moving_mps", s.speed_rmse_moving_mps},
                          {"stopped_frames", s.stopped_frames},
                          {"speed_mean_stopped_mps", s.speed_mean_stopped_mps},
                          {"speed_max_stopped_mps", s.speed_max_stopped_mps}});
-    std::cout << nlohmann::json{{"frames", m.frames}, {"scored", m.scored}, {"matched", m.matched},
-                                {"recall", m.recall()}, {"id_switches", m.id_switches},
+    std::cout << nlohmann::json{{"frames", m.frames},
+                                {"scored", m.scored},
+                                {"matched", m.matched},
+                                {"recall", m.recall()},
+                                {"id_switches", m.id_switches},
                                 {"position_rmse_m", m.position_rmse_m},
                                 {"speed_rmse_mps", m.speed_rmse_mps},
                                 {"velocity_rmse_mps", m.velocity_rmse_mps},
                                 {"false_tracks", m.false_tracks},
-                                {"false_track_ids", m.false_track_ids}, {"objects", objects}}
+                                {"false_track_ids", m.false_track_ids},
+                                {"objects", objects}}
                      .dump(2)
               << std::endl;
     return kExitOk;
   }
-  std::cout << fmt::format("objects  {} frames paired; {} of {} visible object-frames matched (recall {:.3f}); "
-                           "{} id switches; {} false track-frames ({} track ids)\n",
-                           m.frames, m.matched, m.scored, m.recall(), m.id_switches, m.false_tracks,
-                           m.false_track_ids);
+  std::cout << fmt::format(
+      "objects  {} frames paired; {} of {} visible object-frames matched (recall {:.3f}); "
+      "{} id switches; {} false track-frames ({} track ids)\n",
+      m.frames, m.matched, m.scored, m.recall(), m.id_switches, m.false_tracks, m.false_track_ids);
   std::cout << fmt::format("rmse     position {:.4f} m  speed {:.4f} m/s  velocity {:.4f} m/s\n",
                            m.position_rmse_m, m.speed_rmse_mps, m.velocity_rmse_mps);
   for (const ObjectScore& s : m.objects)
-    std::cout << fmt::format("object {} {}: {}/{} frames (recall {:.3f}), {} id switches ({:.2f} per 100 "
-                             "frames), position {:.4f} m, speed {:.4f} m/s (moving {} frames: {:.4f}; "
-                             "stopped {} frames: mean {:.4f} max {:.4f} m/s)\n",
-                             s.class_name, s.gt_id, s.matched, s.scored_frames, s.recall(), s.id_switches,
-                             s.switchesPer100(), s.position_rmse_m, s.speed_rmse_mps, s.moving_frames,
-                             s.speed_rmse_moving_mps, s.stopped_frames, s.speed_mean_stopped_mps,
-                             s.speed_max_stopped_mps);
+    std::cout << fmt::format(
+        "object {} {}: {}/{} frames (recall {:.3f}), {} id switches ({:.2f} per 100 "
+        "frames), position {:.4f} m, speed {:.4f} m/s (moving {} frames: {:.4f}; "
+        "stopped {} frames: mean {:.4f} max {:.4f} m/s)\n",
+        s.class_name, s.gt_id, s.matched, s.scored_frames, s.recall(), s.id_switches,
+        s.switchesPer100(), s.position_rmse_m, s.speed_rmse_mps, s.moving_frames,
+        s.speed_rmse_moving_mps, s.stopped_frames, s.speed_mean_stopped_mps,
+        s.speed_max_stopped_mps);
   return kExitOk;
 }
 
@@ -94,10 +110,12 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
 void registerEvalObjects(CLI::App& root, Action& chosen) {
   auto opt = std::make_shared<EvalObjectsOptions>();
   auto* sub = root.add_subcommand(
-      "eval-objects", "Tracked objects against ground truth: speed and position RMSE, id switches, "
-                      "recall, false tracks (objects seen at least --min-visible share are scored)");
-  sub->add_option("--gt", opt->gt_path,
-                  "ground truth (a simulated sequence's objects_gt.jsonl); without it: speed bands per track");
+      "eval-objects",
+      "Tracked objects against ground truth: speed and position RMSE, id switches, "
+      "recall, false tracks (objects seen at least --min-visible share are scored)");
+  sub->add_option(
+      "--gt", opt->gt_path,
+      "ground truth (a simulated sequence's objects_gt.jsonl); without it: speed bands per track");
   sub->add_option("--est", opt->est_path, "a run's objects.jsonl")->required();
   sub->add_option("--max-match", opt->metrics.max_match_m, "largest track-to-truth distance (m)")
       ->capture_default_str();

@@ -33,8 +33,8 @@ struct TrackedObject {
   int clock = 12;            ///< clock-face direction (12 = straight ahead)
   int points = 0;            ///< tracked points supporting the estimate (GT: visible pixels)
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  ///< [p, v], world
-  int missed_frames = 0;     ///< consecutive frames the segmenter did not see it (carried by flow)
-  int motion_inliers = 0;    ///< inliers of this frame's rigid-motion estimate (0: none)
+  int missed_frames = 0;   ///< consecutive frames the segmenter did not see it (carried by flow)
+  int motion_inliers = 0;  ///< inliers of this frame's rigid-motion estimate (0: none)
   std::vector<PathPoint> predicted_path;  ///< empty for static objects
   double visible_share = -1.0;  ///< ground truth only: share of the object in view (< 0: unknown)
 };

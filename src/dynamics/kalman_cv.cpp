@@ -73,9 +73,8 @@ std::vector<PathPoint> KalmanCv::predictPath(double horizon_s, double step_s) co
     const Mat6 F = transition(ahead);
     const Mat6 P = F * P_ * F.transpose() + processNoise(ahead);
     const Mat3 Pp = P.topLeftCorner<3, 3>();
-    const double lambda = Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (Pp + Pp.transpose()))
-                              .eigenvalues()
-                              .maxCoeff();
+    const double lambda =
+        Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (Pp + Pp.transpose())).eigenvalues().maxCoeff();
     path.push_back({ahead, (F * x_).head<3>(), std::sqrt(std::max(0.0, lambda))});
   }
   return path;

@@ -14,9 +14,9 @@
 namespace dynanav {
 
 struct KalmanCvNoise {
-  double accel_sigma_mps2 = 1.0;   ///< process noise: unmodelled acceleration
-  double position_sigma_m = 0.05;  ///< centre measurement
-  double velocity_sigma_mps = 0.3; ///< one-frame centroid velocity measurement
+  double accel_sigma_mps2 = 1.0;    ///< process noise: unmodelled acceleration
+  double position_sigma_m = 0.05;   ///< centre measurement
+  double velocity_sigma_mps = 0.3;  ///< one-frame centroid velocity measurement
   double initial_velocity_sigma_mps = 1.0;
 };
 

@@ -13,8 +13,14 @@ namespace {
 struct MovedPointCost {
   MovedPointCost(const Vec3& p_prev_world, const Eigen::Vector2d& pixel, const SE3& T_camera_world,
                  const PinholeCamera& camera, double depth_m)
-      : p(p_prev_world), uv(pixel), T(T_camera_world), fx(camera.fx), fy(camera.fy),
-        cx(camera.cx), cy(camera.cy), z(depth_m),
+      : p(p_prev_world),
+        uv(pixel),
+        T(T_camera_world),
+        fx(camera.fx),
+        fy(camera.fy),
+        cx(camera.cx),
+        cy(camera.cy),
+        z(depth_m),
         inv_sigma_z(depth_m > 0.0 ? 1.0 / (0.01 + 0.003 * depth_m * depth_m) : 0.0) {}
 
   template <class S>
@@ -58,8 +64,9 @@ int countInliers(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen:
 }
 
 SE3 refine(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen::Vector2d>& pixels,
-           const std::vector<double>& depth_m, const std::vector<uint8_t>& inlier, const SE3& T_camera_world,
-           const PinholeCamera& camera, const SE3& H0, const ObjectMotionOptions& options) {
+           const std::vector<double>& depth_m, const std::vector<uint8_t>& inlier,
+           const SE3& T_camera_world, const PinholeCamera& camera, const SE3& H0,
+           const ObjectMotionOptions& options) {
   double motion[6];
   const Eigen::AngleAxisd aa(H0.linear());
   const Vec3 w = aa.angle() * aa.axis();
@@ -74,9 +81,10 @@ SE3 refine(const std::vector<Vec3>& p_prev_world, const std::vector<Eigen::Vecto
   for (size_t i = 0; i < p_prev_world.size(); ++i) {
     if (!inlier[i]) continue;
     const double z = i < depth_m.size() ? depth_m[i] : 0.0;
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MovedPointCost, 3, 6>(
-                                 new MovedPointCost(p_prev_world[i], pixels[i], T_camera_world, camera, z)),
-                             &loss, motion);
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<MovedPointCost, 3, 6>(
+            new MovedPointCost(p_prev_world[i], pixels[i], T_camera_world, camera, z)),
+        &loss, motion);
   }
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::DENSE_QR;

@@ -29,7 +29,7 @@ struct ObjectMotion {
   SE3 H_world = SE3::Identity();  ///< previous-frame object points -> this frame's (world)
   std::vector<uint8_t> inlier;    ///< per correspondence
   int inliers = 0;
-  bool from_prior = false;        ///< the prior beat EPnP-RANSAC
+  bool from_prior = false;  ///< the prior beat EPnP-RANSAC
 };
 
 /// `p_prev_world[i]` is seen at `pixels[i]` (undistorted, this frame) by a camera at

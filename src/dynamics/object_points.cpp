@@ -18,8 +18,8 @@ std::optional<cv::Rect> trunkBox(const Instance& instance) {
   if (!instance.keypoints) return std::nullopt;
   constexpr float kMinScore = 0.3f;
   std::vector<cv::Point2f> corners;
-  for (const BodyPart part : {BodyPart::kLeftShoulder, BodyPart::kRightShoulder,
-                              BodyPart::kLeftHip, BodyPart::kRightHip}) {
+  for (const BodyPart part : {BodyPart::kLeftShoulder, BodyPart::kRightShoulder, BodyPart::kLeftHip,
+                              BodyPart::kRightHip}) {
     const Keypoint& k = instance.keypoints->at(part);
     if (k.score < kMinScore) return std::nullopt;
     corners.push_back(k.pixel);

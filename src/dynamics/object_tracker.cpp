@@ -191,9 +191,9 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     options.refine_iterations = config_.refine_iterations;
     options.min_points = config_.min_motion_points;
     options.seed = uint64_t(input.frame_index) * 7919u + track.id;  // same run, same answer
-    const ObjectMotion motion = estimateObjectMotion(kept.p_prev_world, kept.pixels,
-                                                     T_camera_world, input.camera, track.motion,
-                                                     options, kept_depth_m);
+    const ObjectMotion motion =
+        estimateObjectMotion(kept.p_prev_world, kept.pixels, T_camera_world, input.camera,
+                             track.motion, options, kept_depth_m);
     if (motion.ok) {
       Vec3 c = Vec3::Zero();
       for (size_t i = 0; i < motion.inlier.size(); ++i)
@@ -210,8 +210,9 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   const bool thin = double(track.pixels.size()) < config_.replenish_share * track.sampled ||
                     int(track.pixels.size()) < config_.min_motion_points;
   if (instance && thin) {
-    lift(track, sampleObjectPixels(input.instances.labels, *instance,
-                                   {sample_step_px_, config_.max_points, config_.trunk_min_points}),
+    lift(track,
+         sampleObjectPixels(input.instances.labels, *instance,
+                            {sample_step_px_, config_.max_points, config_.trunk_min_points}),
          input);
     track.sampled = int(track.pixels.size());
   }
@@ -231,9 +232,8 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // a chair's noisy speed does not keep it moving).
   const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
   const bool slow = track.filter.velocity().norm() < config_.static_speed_mps;
-  track.stationary = verified_static ||
-                     (track.still >= config_.static_after_frames &&
-                      (slow || track.still >= 3 * config_.static_after_frames));
+  track.stationary = verified_static || (track.still >= config_.static_after_frames &&
+                                         (slow || track.still >= 3 * config_.static_after_frames));
   if (track.stationary) track.filter.holdStill();
 }
 
@@ -244,19 +244,20 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   t.class_name = instance.class_name;
   t.instance = instance.id;
   t.last_stamp_s = input.stamp_s;
-  lift(t, sampleObjectPixels(input.instances.labels, instance,
-                             {sample_step_px_, config_.max_points, config_.trunk_min_points}),
+  lift(t,
+       sampleObjectPixels(input.instances.labels, instance,
+                          {sample_step_px_, config_.max_points, config_.trunk_min_points}),
        input);
   t.sampled = int(t.pixels.size());
   const SE3 T_camera_world = input.T_world_camera.inverse();
   std::vector<Vec3> p_camera;
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
-  const auto centre = objectCentre(p_camera, config_.depth_band_m,
-                                   behindSurface(t.class_name, p_camera, config_));
+  const auto centre =
+      objectCentre(p_camera, config_.depth_band_m, behindSurface(t.class_name, p_camera, config_));
   if (!centre) return std::nullopt;
-  t.filter = KalmanCv(input.T_world_camera * *centre,
-                      {config_.accel_sigma_mps2, config_.position_sigma_m,
-                       config_.velocity_sigma_mps, 1.0});
+  t.filter = KalmanCv(
+      input.T_world_camera * *centre,
+      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0});
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
   t.still = moving ? 0 : 1;
   if (contains(input.dynamics.static_ids, instance.id)) t.still = config_.static_after_frames;
@@ -278,7 +279,8 @@ TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& in
   o.covariance = t.filter.covariance();
   o.missed_frames = t.missed;
   o.motion_inliers = t.inliers;
-  if (!t.stationary) o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
+  if (!t.stationary)
+    o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
   return o;
 }
 

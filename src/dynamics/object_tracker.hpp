@@ -51,7 +51,7 @@ class ObjectTracker {
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
     int missed = 0;
-    int still = 0;  // frames in a row not found moving
+    int still = 0;            // frames in a row not found moving
     bool stationary = false;  // reported with zero velocity
     int inliers = 0;
     double last_stamp_s = 0.0;
@@ -66,7 +66,8 @@ class ObjectTracker {
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped.
-  void lift(Track& track, const std::vector<cv::Point2f>& pixels, const ObjectTrackerInput& input) const;
+  void lift(Track& track, const std::vector<cv::Point2f>& pixels,
+            const ObjectTrackerInput& input) const;
   TrackedObject report(const Track& track, const ObjectTrackerInput& input) const;
 
   ObjectTrackingConfig config_;

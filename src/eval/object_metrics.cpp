@@ -35,7 +35,8 @@ int nearestFrame(const std::vector<ObjectsFrame>& est, double stamp_s, double ma
 
 }  // namespace
 
-ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt, const std::vector<ObjectsFrame>& est,
+ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
+                           const std::vector<ObjectsFrame>& est,
                            const ObjectMetricsOptions& options) {
   ObjectMetrics out;
   std::map<uint64_t, ObjectScore> scores;

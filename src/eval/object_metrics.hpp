@@ -35,7 +35,9 @@ struct ObjectScore {
   int stopped_frames = 0;  ///< matched frames standing still
   double speed_max_stopped_mps = 0.0;
   double speed_mean_stopped_mps = 0.0;
-  [[nodiscard]] double recall() const { return scored_frames ? double(matched) / scored_frames : 0.0; }
+  [[nodiscard]] double recall() const {
+    return scored_frames ? double(matched) / scored_frames : 0.0;
+  }
   [[nodiscard]] double switchesPer100() const {
     return scored_frames ? 100.0 * id_switches / scored_frames : 0.0;
   }
@@ -45,8 +47,8 @@ struct ObjectMetrics {
   int frames = 0;  ///< paired frames
   int scored = 0, matched = 0;
   int id_switches = 0;
-  int false_tracks = 0;           ///< estimated objects (per frame) with no ground truth near
-  int false_track_ids = 0;        ///< distinct track ids ever counted false
+  int false_tracks = 0;     ///< estimated objects (per frame) with no ground truth near
+  int false_track_ids = 0;  ///< distinct track ids ever counted false
   double position_rmse_m = 0.0;
   double speed_rmse_mps = 0.0;
   double velocity_rmse_mps = 0.0;
@@ -54,18 +56,21 @@ struct ObjectMetrics {
   [[nodiscard]] double recall() const { return scored ? double(matched) / scored : 0.0; }
 };
 
-ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt, const std::vector<ObjectsFrame>& est,
+ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
+                           const std::vector<ObjectsFrame>& est,
                            const ObjectMetricsOptions& options = {});
 
 /// Without ground truth (real sequences): per track, how often its speed lies in a band.
 struct TrackSpeedShare {
   uint64_t id = 0;
   std::string class_name;
-  int frames = 0;          ///< frames it was reported
-  int dynamic_frames = 0;  ///< of them, reported moving
-  int in_band = 0;         ///< dynamic frames with speed in [min, max]
+  int frames = 0;                 ///< frames it was reported
+  int dynamic_frames = 0;         ///< of them, reported moving
+  int in_band = 0;                ///< dynamic frames with speed in [min, max]
   double median_speed_mps = 0.0;  ///< over dynamic frames
-  [[nodiscard]] double share() const { return dynamic_frames ? double(in_band) / dynamic_frames : 0.0; }
+  [[nodiscard]] double share() const {
+    return dynamic_frames ? double(in_band) / dynamic_frames : 0.0;
+  }
 };
 std::vector<TrackSpeedShare> trackSpeedShares(const std::vector<ObjectsFrame>& est, double min_mps,
                                               double max_mps);

@@ -20,7 +20,8 @@ Vec3 vec3(const nlohmann::json& j) {
 }
 double sigma(const Eigen::Matrix3d& block) {
   const Eigen::Matrix3d sym = 0.5 * (block + block.transpose());
-  return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(sym).eigenvalues().maxCoeff()));
+  return std::sqrt(
+      std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(sym).eigenvalues().maxCoeff()));
 }
 
 }  // namespace
@@ -105,7 +106,8 @@ std::vector<ObjectsFrame> readObjectsJsonl(const std::filesystem::path& path) {
       for (const auto& o : j.at("objects")) frame.objects.push_back(trackedObjectFromJson(o));
       frames.push_back(std::move(frame));
     } catch (const std::exception& e) {
-      throw InputError(where(path, line.number), std::string("not an objects.jsonl frame: ") + e.what());
+      throw InputError(where(path, line.number),
+                       std::string("not an objects.jsonl frame: ") + e.what());
     }
   }
   return frames;

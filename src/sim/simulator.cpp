@@ -8,7 +8,6 @@
 
 namespace dynanav::sim {
 
-
 Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (!(options.fps > 0.0 && options.fps <= 1000.0))
     throw InputError("--fps", "must be in (0, 1000], got " + std::to_string(options.fps));

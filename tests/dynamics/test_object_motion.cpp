@@ -23,7 +23,8 @@ PinholeCamera camera() {
 std::vector<Vec3> blob(int n, const Vec3& centre_world, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> points;
-  for (int i = 0; i < n; ++i) points.push_back(centre_world + Vec3(0.25 * u(rng), 0.6 * u(rng), 0.15 * u(rng)));
+  for (int i = 0; i < n; ++i)
+    points.push_back(centre_world + Vec3(0.25 * u(rng), 0.6 * u(rng), 0.15 * u(rng)));
   return points;
 }
 
@@ -48,7 +49,8 @@ TEST(ObjectMotion, CentroidDisplacementOfKnownRigidMotions) {
 TEST(ObjectMotion, RecoversKnownMotionWithOutliers) {
   std::mt19937 rng(5);
   const PinholeCamera cam = camera();
-  const SE3 T_world_camera = makeSE3(Quat(Eigen::AngleAxisd(0.1, Vec3::UnitY())), Vec3(0.2, 0.0, 0.5));
+  const SE3 T_world_camera =
+      makeSE3(Quat(Eigen::AngleAxisd(0.1, Vec3::UnitY())), Vec3(0.2, 0.0, 0.5));
   const Vec3 centre = T_world_camera * Vec3(0.3, 0.1, 3.0);
   const auto p_prev = blob(300, centre, rng);
   // A walker: 1.2 m/s for one 30 Hz frame, turning 2 degrees about its vertical axis.
@@ -65,7 +67,8 @@ TEST(ObjectMotion, RecoversKnownMotionWithOutliers) {
     if (i % 5 == 0) px += Eigen::Vector2d(far(rng), far(rng));  // 20 % gross outliers
     pixels.push_back(px);
   }
-  const ObjectMotion m = estimateObjectMotion(p_prev, pixels, T_camera_world, cam, SE3::Identity(), {});
+  const ObjectMotion m =
+      estimateObjectMotion(p_prev, pixels, T_camera_world, cam, SE3::Identity(), {});
   ASSERT_TRUE(m.ok);
   EXPECT_FALSE(m.from_prior);
   EXPECT_GT(m.inliers, 200);
@@ -99,7 +102,8 @@ TEST(KalmanCv, ConvergesToConstantVelocityAndPredictsThePath) {
   for (int k = 1; k <= 120; ++k) {
     p += v_true * dt;
     filter.predict(dt);
-    filter.update(p + Vec3(pos(rng), pos(rng), pos(rng)), v_true + Vec3(vel(rng), vel(rng), vel(rng)));
+    filter.update(p + Vec3(pos(rng), pos(rng), pos(rng)),
+                  v_true + Vec3(vel(rng), vel(rng), vel(rng)));
   }
   EXPECT_LT((filter.velocity() - v_true).norm(), 0.15);
   EXPECT_LT((filter.position() - p).norm(), 0.05);

@@ -36,7 +36,8 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
     const cv::Rect box(left, 150, 60, 120);
     for (int y = box.y; y < box.y + box.height; ++y)
       for (int x = box.x; x < box.x + box.width; ++x)
-        f.depth_m.at<float>(y, x) = 2.0f + 0.05f * float((x - left) % 9) / 9.f + 0.02f * float(y % 5);
+        f.depth_m.at<float>(y, x) =
+            2.0f + 0.05f * float((x - left) % 9) / 9.f + 0.02f * float(y % 5);
     if (!present[k]) continue;
     const uint16_t id = uint16_t(k + 1);
     f.instances.labels(box).setTo(id);
@@ -46,7 +47,8 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
     it.box = box;
     f.instances.items.push_back(it);
   }
-  if (with_flow) f.flow_half = cv::Mat(kH / 2, kW / 2, CV_32FC2, cv::Scalar(kPixelsPerFrame / 2, 0.f));
+  if (with_flow)
+    f.flow_half = cv::Mat(kH / 2, kW / 2, CV_32FC2, cv::Scalar(kPixelsPerFrame / 2, 0.f));
   return f;
 }
 

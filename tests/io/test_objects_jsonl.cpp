@@ -65,8 +65,10 @@ TEST(ObjectsJsonl, RoundTrip) {
 
 TEST(ObjectsJsonl, MalformedLineNamesFileAndLine) {
   const auto dir = scratchDir("objects_jsonl_bad");
-  std::ofstream(dir / "bad.jsonl") << R"({"t":0,"objects":[]})" << "\n"
-                                   << R"({"t":1,"objects":[{"id":1}]})" << "\n";
+  std::ofstream(dir / "bad.jsonl") << R"({"t":0,"objects":[]})"
+                                   << "\n"
+                                   << R"({"t":1,"objects":[{"id":1}]})"
+                                   << "\n";
   try {
     (void)readObjectsJsonl(dir / "bad.jsonl");
     FAIL() << "expected InputError";

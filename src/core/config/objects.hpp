@@ -25,7 +25,8 @@ struct ObjectTrackingConfig {
   double static_speed_mps = 0.25;
   double path_horizon_s = 3.0;
   double path_step_s = 0.5;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("enabled", enabled, "track instances (ids, position, velocity); only with dynamics on");
     v("max_points", max_points,
       "most points kept per object (the 5 px grid is thinned to this; bounds the per-frame cost)");
@@ -37,18 +38,23 @@ struct ObjectTrackingConfig {
       "a track the segmenter misses is carried by its flow points for at most this many frames");
     v("match_min_score", match_min_score,
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id");
-    v("depth_band_m", depth_band_m, "points farther than this (m) from the object's median depth are dropped");
+    v("depth_band_m", depth_band_m,
+      "points farther than this (m) from the object's median depth are dropped");
     v("centre_behind_surface_m", centre_behind_surface_m,
-      "a person's centre lies this far (m) behind the visible surface, along the viewing ray (other "
+      "a person's centre lies this far (m) behind the visible surface, along the viewing ray "
+      "(other "
       "objects: half their visible width)");
-    v("min_motion_points", min_motion_points, "fewest 3D-2D correspondences for a rigid-motion estimate");
+    v("min_motion_points", min_motion_points,
+      "fewest 3D-2D correspondences for a rigid-motion estimate");
     v("ransac_iterations", ransac_iterations, "EPnP-RANSAC iterations per object and frame");
     v("ransac_reprojection_px", ransac_reprojection_px, "EPnP-RANSAC inlier threshold (px)");
     v("refine_huber_px", refine_huber_px, "Ceres refinement: Huber loss scale (px)");
-    v("refine_iterations", refine_iterations, "Ceres refinement: most Levenberg-Marquardt iterations");
+    v("refine_iterations", refine_iterations,
+      "Ceres refinement: most Levenberg-Marquardt iterations");
     v("accel_sigma_mps2", accel_sigma_mps2, "Kalman filter: unmodelled acceleration (m/s^2)");
     v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)");
-    v("velocity_sigma_mps", velocity_sigma_mps, "Kalman filter: noise of the one-frame centroid velocity (m/s)");
+    v("velocity_sigma_mps", velocity_sigma_mps,
+      "Kalman filter: noise of the one-frame centroid velocity (m/s)");
     v("static_after_frames", static_after_frames,
       "an object not found moving for this many frames in a row and measured slower than "
       "static_speed_mps (or not found moving for 3x as many frames) is static: velocity zero");

@@ -19,12 +19,15 @@ TEST(TrackingE2e, CrossingWalkerIsTrackedWithOneIdAndPlausibleSpeed) {
   const fs::path out = test::scratchDir("track_crossing_out");
   const fs::path out2 = test::scratchDir("track_crossing_out2");
   std::string log;
-  ASSERT_EQ(test::runCli("simulate --scenario crossing --frames 120 --seed 1 --out " + seq.string(), &log), 0)
+  ASSERT_EQ(test::runCli("simulate --scenario crossing --frames 120 --seed 1 --out " + seq.string(),
+                         &log),
+            0)
       << log;
   std::ofstream(out / "c.yaml") << "tracking:\n  init_min_depth_features: 150\n";
   for (const fs::path& o : {out, out2})
     ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + o.string() +
-                               " --segmenter masks --deterministic --quiet --config " + (out / "c.yaml").string(),
+                               " --segmenter masks --deterministic --quiet --config " +
+                               (out / "c.yaml").string(),
                            &log),
               0)
         << log;
