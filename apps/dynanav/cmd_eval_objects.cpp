@@ -120,7 +120,7 @@ void registerEvalObjects(CLI::App& root, Action& chosen) {
   sub->add_option("--max-match", opt->metrics.max_match_m, "largest track-to-truth distance (m)")
       ->capture_default_str();
   sub->add_option("--min-visible", opt->metrics.min_visible_share,
-                  "objects less in view than this share (objects_gt visible_share) are not scored")
+                  "objects less in view than this share (objects_gt in_view) are not scored")
       ->capture_default_str();
   sub->add_option("--speed-band", opt->speed_band, "without --gt: MIN:MAX speed band (m/s)")
       ->capture_default_str();

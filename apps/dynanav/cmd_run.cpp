@@ -8,6 +8,7 @@
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "pipeline/run_sequence.hpp"
 
 namespace dynanav::cli {
@@ -25,6 +26,7 @@ struct RunFlags {
   bool deterministic = false;
   bool realtime = false;
   bool unpaced = false;
+  int passes = 1;
   int max_frames = 0;
   bool quiet = false;
 };
@@ -37,10 +39,10 @@ int runCommand(const RunFlags& flags) {
   if (!flags.dynamic.empty()) options.config.run.dynamic = flags.dynamic == "on";
   if (!flags.segmenter.empty()) options.config.run.segmenter = flags.segmenter;  // issue 7
   if (!flags.models.empty()) options.config.perception.models_dir = flags.models;
-  if (flags.segment_every < 0) throw InputError("", "--segment-every must be >= 1");
+  if (flags.segment_every < 0) throw InputError("--segment-every", "must be >= 1");
   if (flags.segment_every > 0) options.config.run.segment_every = flags.segment_every;
   if (flags.deterministic && flags.realtime)
-    throw InputError("", "--deterministic and --realtime exclude each other");
+    throw InputError("--deterministic", "excludes --realtime");
   if (flags.deterministic) {
     options.config.run.deterministic = true;
     options.config.run.realtime = false;
@@ -53,22 +55,39 @@ int runCommand(const RunFlags& flags) {
   }
   // A config file may ask for real time; deterministic mode means one thread, so both agree.
   if (options.config.run.realtime && !flags.deterministic) options.config.run.deterministic = false;
-  if (flags.max_frames < 0) throw InputError("", "--max-frames must be >= 0");
+  if (flags.passes < 1)
+    throw InputError("--passes", "must be at least 1, got " + std::to_string(flags.passes));
+  options.passes = flags.passes;
+  if (flags.max_frames < 0) throw InputError("--max-frames", "must be >= 0");
   if (flags.max_frames > 0) options.config.run.max_frames = flags.max_frames;
   options.max_frames = options.config.run.max_frames;
+  options.config.validate(flags.config_path.empty() ? "command line"
+                                                    : flags.config_path + " with the flags");
   if (!flags.blackout.empty()) {
     std::smatch m;
-    const std::regex pattern(R"((\d+):(\d+))");
+    // At most 9 digits each, so stoi cannot overflow.
+    const std::regex pattern(R"((\d{1,9}):(\d{1,9}))");
     if (!std::regex_match(flags.blackout, m, pattern) || std::stoi(m[1]) > std::stoi(m[2]))
-      throw InputError("", "--blackout expects A:B with 0 <= A <= B, got '" + flags.blackout + "'");
+      throw InputError("--blackout",
+                       "expects A:B with 0 <= A <= B < 1e9, got '" + flags.blackout + "'");
     options.blackout = std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
   }
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
   if (flags.quiet) spdlog::set_level(spdlog::level::warn);
   options.progress = !flags.quiet && isatty(STDERR_FILENO);
+  installInterruptHandlers();
   const RunSummary summary = runSequence(options);
+  if (summary.interrupted_by_signal)
+    return 128 + summary.interrupted_by_signal;  // 130 SIGINT, 143 SIGTERM
+  if (summary.frames == 0)
+    throw InputError(flags.sequence_dir, "no frame could be read: all " +
+                                             std::to_string(summary.skipped) +
+                                             " frames were skipped (see the warnings above)");
   if (!summary.initialised) {
-    spdlog::error("tracking never initialised: no frame had enough keypoints with valid depth");
+    spdlog::error(
+        "tracking never initialised: no frame had enough keypoints with valid depth ({} frames "
+        "processed, {} skipped as unreadable)",
+        summary.frames, summary.skipped);
     return kExitNotInitialised;
   }
   return kExitOk;
@@ -94,7 +113,8 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_option("--models", flags->models,
                   "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
   sub->add_option("--segment-every", flags->segment_every,
-                  "segment every k-th frame, propagate masks between");
+                  "segment every k-th frame, propagate masks between")
+      ->check(finiteRange(1, 1000));
   sub->add_flag("--deterministic", flags->deterministic,
                 "single thread, local mapping inline: identical results run to run (default)");
   sub->add_flag("--realtime", flags->realtime,
@@ -103,7 +123,12 @@ void registerRun(CLI::App& root, Action& chosen) {
                 "closing in their own threads");
   sub->add_flag("--unpaced", flags->unpaced,
                 "with --realtime: frames as fast as they are processed, none dropped");
-  sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)");
+  sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)")
+      ->check(finiteRange(0, 2147483647));
+  sub->add_option("--passes", flags->passes,
+                  "play the sequence N times in a row, time running on (a long-run test; "
+                  "relocalises at each restart)")
+      ->check(finiteRange(1, 1000000));
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");

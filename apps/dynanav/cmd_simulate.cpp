@@ -54,18 +54,18 @@ void registerSimulate(CLI::App& root, Action& chosen) {
                   "output folder (TUM layout plus masks/, masks.json, objects_gt.jsonl)");
   sub->add_option("--frames", args->options.frames,
                   "number of frames (default: the scenario's length)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteRange(0, 100000));
   sub->add_option("--seed", args->options.seed, "random seed: textures, clothing, sensor noise")
       ->capture_default_str();
   sub->add_option("--fps", args->options.fps, "frame rate")
       ->capture_default_str()
-      ->check(CLI::Range(1.0, 1000.0));
+      ->check(finiteRange(1.0, 1000.0));
   sub->add_flag("--noiseless", args->options.noiseless, "exact depth and clean colour (for tests)");
   sub->add_option_function<double>(
          "--rolling-shutter-ms", [args](double ms) { args->options.readout_s = ms * 1e-3; },
          "rolling-shutter readout of the camera (ms; 0 = global shutter, the default); written to "
          "camera.yaml")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(finiteRange(0.0, 1000.0));
   sub->add_flag("!--no-photos", args->options.photos,
                 "posters without the opencv-doc example photos");
   sub->add_flag("--list", args->list, "list the scenarios and exit");

@@ -60,8 +60,8 @@ int runTrain(const TrainOptions& opt) {
   train.branching = opt.branching;
   train.levels = opt.levels;
   train.seed = opt.seed;
-  train.source = fmt::format("{} images ({} video frames, every {}th) from: {}",
-                             descriptors.size(), video_frames, opt.video_step, joined(opt.inputs));
+  train.source = fmt::format("{} images ({} video frames, every {}th) from: {}", descriptors.size(),
+                             video_frames, opt.video_step, joined(opt.inputs));
   const Vocabulary vocabulary = Vocabulary::train(descriptors, train);
   const auto trained = std::chrono::steady_clock::now();
   if (const auto parent = std::filesystem::path(opt.out).parent_path(); !parent.empty())
@@ -73,7 +73,8 @@ int runTrain(const TrainOptions& opt) {
       "vocabulary {}: k={} L={} words={} from {} images, {} descriptors; ORB {:.1f} s, "
       "k-means {:.1f} s\n",
       opt.out, opt.branching, opt.levels, vocabulary.words(), descriptors.size(),
-      vocabulary.info().training_descriptors, seconds(start, extracted), seconds(extracted, trained));
+      vocabulary.info().training_descriptors, seconds(start, extracted),
+      seconds(extracted, trained));
   return kExitOk;
 }
 
@@ -100,11 +101,17 @@ void registerVocabulary(CLI::App& root, Action& chosen) {
       ->required();
   t->add_option("--out", train.out, "vocabulary file to write")->required();
   t->add_option("--k", train.branching, "branching factor")->capture_default_str();
-  t->add_option("--levels", train.levels, "tree depth L (at most k^L words)")->capture_default_str();
-  t->add_option("--max-images", train.max_images, "use at most N images, evenly spaced (0 = all)")
+  t->add_option("--levels", train.levels, "tree depth L (at most k^L words)")
       ->capture_default_str();
-  t->add_option("--video-step", train.video_step, "use every Nth video frame")->capture_default_str();
-  t->add_option("--features", train.features, "ORB features per image")->capture_default_str();
+  t->add_option("--max-images", train.max_images, "use at most N images, evenly spaced (0 = all)")
+      ->check(finiteRange(0, 1e9))
+      ->capture_default_str();
+  t->add_option("--video-step", train.video_step, "use every Nth video frame")
+      ->check(finiteRange(1, 1e6))
+      ->capture_default_str();
+  t->add_option("--features", train.features, "ORB features per image")
+      ->check(finiteRange(1, 100000))
+      ->capture_default_str();
   t->add_option("--seed", train.seed, "k-means++ seed")->capture_default_str();
   t->callback([&chosen] { chosen = [] { return runTrain(train); }; });
 

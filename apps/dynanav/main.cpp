@@ -1,25 +1,53 @@
 // dynanav command-line entry point: subcommands per DESIGN.md §2.
+#include <fcntl.h>
 #include <malloc.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
 
+namespace {
+
+/// A closed stdin, stdout or stderr would hand its number to the next file opened, and whatever
+/// is printed would land inside that file (a trajectory, stats.json): keep them open on
+/// /dev/null instead.
+void keepStandardStreamsOpen() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (fcntl(fd, F_GETFD) != -1) continue;
+    const int null_fd = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+    if (null_fd >= 0 && null_fd != fd) {
+      dup2(null_fd, fd);
+      close(null_fd);
+    }
+  }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  keepStandardStreamsOpen();
+  // Logs go to stderr (spdlog's default logger writes to stdout), so stdout carries only a
+  // command's results (eval's figures, info's summary) and can be piped.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("dynanav"));
   // Keep freed frame-sized buffers in the heap: glibc otherwise maps and unmaps each multi-MB
   // image buffer, and the page faults of fresh pages cost up to ~15 ms per 2.4 MB buffer on the
   // dev machine (bench_perception, docs/perception.md). Every per-frame command benefits.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 128 << 20);
-  CLI::App app{"dynanav: dynamic RGB-D SLAM and navigation assistance for blind and visually "
-               "impaired walkers"};
+  CLI::App app{
+      "dynanav: dynamic RGB-D SLAM and navigation assistance for blind and visually "
+      "impaired walkers"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "dynanav 0.1.0");
   dynanav::cli::Action chosen;
   dynanav::cli::registerRun(app, chosen);
   dynanav::cli::registerEval(app, chosen);
+  dynanav::cli::registerEvalMasks(app, chosen);
   dynanav::cli::registerEvalObjects(app, chosen);
   dynanav::cli::registerSimulate(app, chosen);
   dynanav::cli::registerSegment(app, chosen);
@@ -34,6 +62,10 @@ int main(int argc, char** argv) {
     return chosen ? chosen() : dynanav::kExitBadInput;
   } catch (const dynanav::InputError& e) {
     spdlog::error("{}", e.what());
+    return dynanav::kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A symlink loop, a path component that is a file, no permission: the user's input.
+    spdlog::error("{}: {}", e.path1().string(), e.code().message());
     return dynanav::kExitBadInput;
   } catch (const std::exception& e) {
     spdlog::critical("internal error: {}", e.what());

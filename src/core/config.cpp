@@ -2,30 +2,65 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include "core/error.hpp"
 
 namespace dynanav {
 namespace {
 
+template <class T>
+std::string showValue(const T& value) {
+  YAML::Emitter e;
+  e << YAML::Flow << value;
+  return e.c_str();
+}
+
+template <class T, class C>
+void checkValue(const std::string& where, const char* key, const T& value, const C& valid) {
+  // Every numeric key documents its range: a new key without one does not compile.
+  static_assert(!std::is_arithmetic_v<T> || std::is_same_v<T, bool> || std::is_same_v<C, Range>,
+                "numeric config keys need a Range (core/config/range.hpp)");
+  if (valid.contains(value)) return;
+  throw ConfigError(where, std::string("key '") + key + "' = " + showValue(value) +
+                               " is out of range, expected " + valid.describe());
+}
+
+/// Checks every field against its constraint (after flags changed a loaded config).
+class Validator {
+ public:
+  explicit Validator(std::string where) : where_(std::move(where)) {}
+  template <class T, class C = AnyValue>
+  void operator()(const char* key, const T& value, const char* /*doc*/, const C& valid = {}) {
+    checkValue(where_, key, value, valid);
+  }
+
+ private:
+  std::string where_;
+};
+
 /// Reads the fields a section visits from a YAML map, remembering which keys it knew.
 class YamlReader {
  public:
   YamlReader(const YAML::Node& node, std::string where) : node_(node), where_(std::move(where)) {}
 
-  template <class T>
-  void operator()(const char* key, T& value, const char* /*doc*/) {
+  template <class T, class C = AnyValue>
+  void operator()(const char* key, T& value, const char* /*doc*/, const C& valid = {}) {
     known_.insert(key);
     const YAML::Node field = node_[key];
     if (!field) return;
     try {
       value = field.as<T>();
     } catch (const YAML::Exception&) {
-      throw ConfigError(where_, std::string("key '") + key + "' has a value of the wrong type");
+      throw ConfigError(where_,
+                        std::string("key '") + key + "' has a value of the wrong type" +
+                            (valid.describe().empty() ? "" : ", expected " + valid.describe()));
     }
+    checkValue(where_, key, value, valid);
   }
 
   void rejectUnknownKeys() const {
@@ -45,11 +80,12 @@ class YamlReader {
 class YamlWriter {
  public:
   explicit YamlWriter(std::ostringstream& out) : out_(out) {}
-  template <class T>
-  void operator()(const char* key, const T& value, const char* doc) {
-    YAML::Emitter e;
-    e << YAML::Flow << value;
-    out_ << "  " << key << ": " << e.c_str() << "  # " << doc << "\n";
+  template <class T, class C = AnyValue>
+  void operator()(const char* key, const T& value, const char* doc, const C& valid = {}) {
+    out_ << "  " << key << ": " << showValue(value) << "  # " << doc;
+    if (const std::string range = valid.describe(); !range.empty())
+      out_ << " (valid: " << range << ")";
+    out_ << "\n";
   }
 
  private:
@@ -73,7 +109,8 @@ Config Config::parse(const std::string& yaml_text, const std::string& source) {
     sections.insert(name);
     const YAML::Node node = root[name];
     if (!node) return;
-    if (!node.IsMap()) throw ConfigError(source, std::string("section '") + name + "' must be a map");
+    if (!node.IsMap())
+      throw ConfigError(source, std::string("section '") + name + "' must be a map");
     YamlReader reader(node, source + " [" + name + "]");
     section.visit(reader);
     reader.rejectUnknownKeys();
@@ -85,7 +122,19 @@ Config Config::parse(const std::string& yaml_text, const std::string& source) {
   return config;
 }
 
+void Config::validate(const std::string& source) const {
+  auto& self = const_cast<Config&>(*this);  // visit() is shared by readers and writers
+  self.visitSections([&](const char* name, auto& section) {
+    Validator validator(source + " [" + name + "]");
+    section.visit(validator);
+  });
+}
+
 Config Config::load(const std::string& yaml_path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(yaml_path, ec))
+    throw ConfigError(yaml_path, ec ? "cannot open config file: " + ec.message()
+                                    : std::string("config file not found (or not a file)"));
   std::ifstream in(yaml_path);
   if (!in) throw ConfigError(yaml_path, "cannot open config file");
   std::stringstream text;

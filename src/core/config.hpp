@@ -2,6 +2,7 @@
 // The Config: all sections, loaded from YAML (unknown keys rejected) and echoed with docs.
 #include <string>
 
+#include "core/config/range.hpp"
 #include "core/config/sections.hpp"
 
 namespace dynanav {
@@ -17,7 +18,8 @@ struct Config {
   ObjectTrackingConfig objects;
   RunConfig run;
 
-  template <class V> void visitSections(V&& v) {
+  template <class V>
+  void visitSections(V&& v) {
     v("io", io);
     v("orb", orb);
     v("tracking", tracking);
@@ -34,6 +36,10 @@ struct Config {
   static Config load(const std::string& yaml_path);
   /// Same, from YAML text (`source` names it in errors).
   static Config parse(const std::string& yaml_text, const std::string& source = "<yaml>");
+  /// Throws ConfigError naming `source` and the key when a value is outside its documented
+  /// range (each section's visit() gives it; NaN and infinity are never in range). parse()
+  /// checks what it reads; call this again after command-line flags changed values.
+  void validate(const std::string& source) const;
   /// The effective config as YAML, each key with its doc as a comment.
   [[nodiscard]] std::string toYaml() const;
 };

@@ -62,11 +62,12 @@ double threadCpuMs() {
   return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
-double peakRssMb() {
+namespace {
+double statusMb(const char* field) {
   std::ifstream status("/proc/self/status");
   std::string key;
   while (status >> key) {
-    if (key == "VmHWM:") {
+    if (key == field) {
       double kb = 0;
       status >> kb;
       return kb / 1024.0;
@@ -75,6 +76,15 @@ double peakRssMb() {
     std::getline(status, rest);
   }
   return 0.0;
+}
+}  // namespace
+
+double peakRssMb() {
+  return statusMb("VmHWM:");
+}
+
+double currentRssMb() {
+  return statusMb("VmRSS:");
 }
 
 }  // namespace dynanav

@@ -71,5 +71,7 @@ inline double msSince(std::chrono::steady_clock::time_point start) {
 
 /// Peak resident set size of this process in MiB (Linux; 0 where unknown).
 double peakRssMb();
+/// Resident set size of this process now, in MiB (Linux; 0 where unknown).
+double currentRssMb();
 
 }  // namespace dynanav

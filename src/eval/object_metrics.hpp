@@ -3,8 +3,8 @@
 // for `dynanav eval-objects`. Frames pair by nearest stamp (within max_dt_s). In each pair every
 // estimated object is matched to a ground-truth object by position (greedy, nearest first, within
 // max_match_m). Only ground-truth objects at least min_visible_share in view are scored
-// (visible_share = visible pixels / pixels it would cover alone and with no image border, written
-// by the simulator); an estimate matched to a less visible object is neither scored nor false.
+// (objects_gt `in_view` = visible pixels / pixels of its whole silhouette alone, written by the
+// simulator); an estimate matched to a less visible object is neither scored nor false.
 #include <cstdint>
 #include <map>
 #include <string>

@@ -2,55 +2,121 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
 namespace dynanav {
 
+namespace {
+
+/// A camera.yaml key and its valid values (README, "Sequences"); NaN and infinity never pass.
+struct CameraKey {
+  const char* key;
+  bool required;
+  double lo;
+  double hi;
+};
+
+constexpr CameraKey kCameraKeys[] = {
+    {"width", true, 16, 8192},
+    {"height", true, 16, 8192},
+    {"fx", true, 1, 100000},
+    {"fy", true, 1, 100000},
+    {"cx", true, 0, 8192},  // also within [0, width], checked below
+    {"cy", true, 0, 8192},
+    {"distortion", false, -100, 100},  // each of k1 k2 p1 p2 k3
+    {"depth_factor", false, 1e-3, 1e6},
+    {"baseline_m", false, 1e-3, 10},
+    {"rolling_shutter_readout_ms", false, 0, 1000},
+};
+
+std::string rangeText(const CameraKey& k) {
+  std::ostringstream s;
+  s << "[" << k.lo << ", " << k.hi << "]";
+  return s.str();
+}
+
+}  // namespace
+
 PinholeCamera loadCameraYaml(const std::filesystem::path& path) {
+  const std::string file = path.string();
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path.string());
+    root = YAML::LoadFile(file);
   } catch (const YAML::Exception& e) {
-    throw InputError(path.string(), std::string("cannot parse camera file: ") + e.what());
+    throw InputError(file, std::string("cannot parse camera file: ") + e.what());
   }
-  if (!root.IsMap()) throw InputError(path.string(), "camera file must be a YAML map");
+  if (!root.IsMap()) throw InputError(file, "camera file must be a YAML map");
+  for (const auto& kv : root) {
+    std::string key;
+    try {
+      key = kv.first.as<std::string>();
+    } catch (const YAML::Exception&) {
+      throw InputError(file, "camera file keys must be plain words");
+    }
+    bool known = false;
+    for (const CameraKey& k : kCameraKeys) known = known || key == k.key;
+    if (!known) throw InputError(file, "unknown key '" + key + "'");
+  }
+  std::map<std::string, std::vector<double>> values;
+  for (const CameraKey& k : kCameraKeys) {
+    const YAML::Node node = root[k.key];
+    if (!node) {
+      if (k.required) throw InputError(file, std::string("missing key '") + k.key + "'");
+      continue;
+    }
+    std::vector<double> v;
+    try {
+      if (std::string(k.key) == "distortion") {
+        v = node.as<std::vector<double>>();
+        if (v.size() != 5)
+          throw InputError(
+              file, "'distortion' needs 5 values k1 k2 p1 p2 k3, got " + std::to_string(v.size()));
+      } else {
+        v = {node.as<double>()};
+      }
+    } catch (const YAML::Exception&) {
+      throw InputError(file, std::string("bad value for '") + k.key + "': not a number" +
+                                 (std::string(k.key) == "distortion" ? " list" : ""));
+    }
+    for (const double x : v) {
+      if (!std::isfinite(x) || x < k.lo || x > k.hi) {
+        std::ostringstream shown;
+        shown << x;
+        throw InputError(file, std::string("'") + k.key + "' = " + shown.str() +
+                                   " is out of range, expected " + rangeText(k));
+      }
+    }
+    values[k.key] = v;
+  }
   PinholeCamera camera;
   camera.name = path.parent_path().filename().string();
-  const auto required = [&](const char* key, auto& value) {
-    if (!root[key]) throw InputError(path.string(), std::string("missing key '") + key + "'");
-    try {
-      value = root[key].as<std::decay_t<decltype(value)>>();
-    } catch (const YAML::Exception&) {
-      throw InputError(path.string(), std::string("bad value for '") + key + "'");
-    }
-  };
-  const auto optional = [&](const char* key, auto& value) {
-    if (root[key]) required(key, value);
-  };
-  required("width", camera.width);
-  required("height", camera.height);
-  required("fx", camera.fx);
-  required("fy", camera.fy);
-  required("cx", camera.cx);
-  required("cy", camera.cy);
-  optional("depth_factor", camera.depth_factor);
-  optional("baseline_m", camera.baseline_m);
-  double readout_ms = 0.0;
-  optional("rolling_shutter_readout_ms", readout_ms);
-  camera.readout_s = readout_ms * 1e-3;
-  if (root["distortion"]) {
-    std::vector<double> d;
-    required("distortion", d);
-    if (d.size() != 5) throw InputError(path.string(), "'distortion' needs 5 values k1 k2 p1 p2 k3");
-    std::copy(d.begin(), d.end(), camera.distortion.begin());
+  for (const char* key : {"width", "height"}) {
+    if (values[key][0] != std::floor(values[key][0]))
+      throw InputError(file, std::string("'") + key + "' must be a whole number of pixels");
   }
-  if (camera.width <= 0 || camera.height <= 0 || camera.fx <= 0 || camera.fy <= 0 ||
-      camera.depth_factor <= 0 || camera.baseline_m <= 0 || camera.readout_s < 0) {
-    throw InputError(path.string(), "width, height, fx, fy, depth_factor and baseline_m must be > 0, "
-                                   "rolling_shutter_readout_ms >= 0");
-  }
+  camera.width = static_cast<int>(values["width"][0]);
+  camera.height = static_cast<int>(values["height"][0]);
+  camera.fx = values["fx"][0];
+  camera.fy = values["fy"][0];
+  camera.cx = values["cx"][0];
+  camera.cy = values["cy"][0];
+  if (camera.cx > camera.width || camera.cy > camera.height)
+    throw InputError(file, "principal point ('cx', 'cy') lies outside the " +
+                               std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                               " image");
+  if (values.count("distortion"))
+    std::copy(values["distortion"].begin(), values["distortion"].end(), camera.distortion.begin());
+  if (values.count("depth_factor")) camera.depth_factor = values["depth_factor"][0];
+  if (values.count("baseline_m")) camera.baseline_m = values["baseline_m"][0];
+  if (values.count("rolling_shutter_readout_ms"))
+    camera.readout_s = values["rolling_shutter_readout_ms"][0] * 1e-3;
   return camera;
 }
 
@@ -72,6 +138,8 @@ void saveCameraYaml(const std::filesystem::path& path, const PinholeCamera& came
   std::ofstream out(path);
   if (!out) throw InputError(path.string(), "cannot write camera file");
   out << e.c_str() << "\n";
+  out.close();
+  if (!out) throw InputError(path.string(), "cannot write camera file (disk full?)");
 }
 
 }  // namespace dynanav

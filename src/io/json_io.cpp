@@ -7,13 +7,14 @@
 
 namespace dynanav {
 
-JsonLinesWriter::JsonLinesWriter(const std::filesystem::path& path) : out_(path) {
+JsonLinesWriter::JsonLinesWriter(const std::filesystem::path& path) : path_(path), out_(path) {
   if (!out_) throw InputError(path.string(), "cannot write file");
 }
 
 void JsonLinesWriter::write(const nlohmann::json& record) {
   out_ << record.dump() << '\n';
   out_.flush();
+  if (!out_) throw InputError(path_.string(), "writing failed (disk full?)");
 }
 
 std::vector<nlohmann::json> readJsonLines(const std::filesystem::path& path) {
@@ -28,14 +29,28 @@ std::vector<nlohmann::json> readJsonLines(const std::filesystem::path& path) {
   return records;
 }
 
+void writeTextFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(path.string(), "cannot write file");
+  out << text;
+  out.close();
+  if (!out) throw InputError(path.string(), "writing failed (disk full?)");
+}
+
 void writeJsonFile(const std::filesystem::path& path, const nlohmann::json& value) {
   const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw InputError(path.string(), "cannot write file");
-    out << value.dump(2) << '\n';
+  std::error_code ec;
+  try {
+    writeTextFile(tmp, value.dump(2) + "\n");
+  } catch (const InputError&) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path.string(), "writing failed (disk full?)");
   }
-  std::filesystem::rename(tmp, path);
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path.string(), "cannot replace file: " + ec.message());
+  }
 }
 
 nlohmann::json readJsonFile(const std::filesystem::path& path) {

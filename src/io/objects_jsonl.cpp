@@ -39,7 +39,7 @@ nlohmann::json toJson(const TrackedObject& o) {
                       {"speed", round6(o.speed_mps)},
                       {"heading_deg", round6(o.heading_deg)},
                       {"points", o.points}};
-  if (o.visible_share >= 0.0) j["visible_share"] = round6(o.visible_share);
+  if (o.visible_share >= 0.0) j["in_view"] = round6(o.visible_share);
   if (!o.covariance.isZero()) {
     j["missed_frames"] = o.missed_frames;
     j["motion_inliers"] = o.motion_inliers;
@@ -81,7 +81,7 @@ TrackedObject trackedObjectFromJson(const nlohmann::json& j) {
   o.speed_mps = j.at("speed").get<double>();
   o.points = j.at("points").get<int>();
   o.heading_deg = j.value("heading_deg", 0.0);
-  o.visible_share = j.value("visible_share", -1.0);
+  o.visible_share = j.value("in_view", -1.0);
   o.missed_frames = j.value("missed_frames", 0);
   o.motion_inliers = j.value("motion_inliers", 0);
   if (j.contains("covariance")) {

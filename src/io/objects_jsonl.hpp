@@ -3,8 +3,9 @@
 // the run (ObjectsSink) and by the simulator (objects_gt.jsonl) through this one piece of code.
 // Keys beyond DESIGN.md's: heading_deg, missed_frames, motion_inliers, sigma_position_m,
 // sigma_velocity_mps, covariance (row-major 6x6, [p, v] world), predicted_path
-// ([{"ahead_s", "position_world", "sigma_m"}]) and, ground truth only, visible_share.
-// Numbers are rounded to 6 decimals (files compare byte for byte between runs).
+// ([{"ahead_s", "position_world", "sigma_m"}]) and, ground truth only, in_view
+// (TrackedObject::visible_share). Numbers are rounded to 6 decimals (files compare byte for byte
+// between runs).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <vector>

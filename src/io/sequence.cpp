@@ -1,12 +1,13 @@
 #include "io/sequence.hpp"
 
+#include <spdlog/spdlog.h>
 #include <algorithm>
 #include <opencv2/imgcodecs.hpp>
-#include <spdlog/spdlog.h>
 #include <tuple>
 
 #include "core/error.hpp"
 #include "io/camera_yaml.hpp"
+#include "io/image_file.hpp"
 #include "io/text_lines.hpp"
 
 namespace fs = std::filesystem;
@@ -66,9 +67,7 @@ std::vector<FramePair> associate(const std::vector<StampedFile>& rgb,
 }
 
 cv::Mat readDepthPng(const fs::path& path, double depth_factor, cv::Size expected_size) {
-  if (!fs::exists(path)) throw InputError(path.string(), "depth image not found");
-  const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
-  if (raw.empty()) throw InputError(path.string(), "cannot decode depth image");
+  const cv::Mat raw = readImageFile(path, cv::IMREAD_UNCHANGED, "depth image");
   if (raw.type() != CV_16UC1) {
     throw InputError(path.string(), "depth image must be 16-bit single-channel, got type " +
                                         cv::typeToString(raw.type()));
@@ -115,8 +114,9 @@ TumSequence TumSequence::open(const fs::path& dir, const IoConfig& config,
     seq.camera_ = *fallback_camera;
     seq.camera_source_ = "config";
   } else {
-    throw InputError(dir.string(), "no camera calibration: add camera.yaml, name the folder after "
-                                   "freiburg1|2|3 or bonn, or pass --config with a camera");
+    throw InputError(dir.string(),
+                     "no camera calibration: add camera.yaml, name the folder after "
+                     "freiburg1|2|3 or bonn, or pass --config with a camera");
   }
   const auto rgb = readStampedFileList(dir / "rgb.txt");
   const auto depth = readStampedFileList(dir / "depth.txt");
@@ -143,16 +143,18 @@ RgbdFrame TumSequence::load(size_t i) const {
   frame.depth_stamp_s = pair.depth.stamp_s;
   frame.rgb_path = (dir_ / pair.rgb.relative_path).string();
   frame.depth_path = (dir_ / pair.depth.relative_path).string();
-  if (!fs::exists(frame.rgb_path)) throw InputError(frame.rgb_path, "colour image not found");
-  frame.bgr = cv::imread(frame.rgb_path, cv::IMREAD_COLOR);
-  if (frame.bgr.empty()) throw InputError(frame.rgb_path, "cannot decode colour image");
+  frame.bgr = readImageFile(frame.rgb_path, cv::IMREAD_COLOR, "colour image");
   if (frame.bgr.cols != camera_.width || frame.bgr.rows != camera_.height) {
     throw InputError(frame.rgb_path, "image is " + std::to_string(frame.bgr.cols) + "x" +
                                          std::to_string(frame.bgr.rows) + ", camera expects " +
                                          std::to_string(camera_.width) + "x" +
                                          std::to_string(camera_.height));
   }
+  if (const std::string problem = colourFrameProblem(frame.bgr); !problem.empty())
+    throw InputError(frame.rgb_path, "colour image is " + problem);
   frame.depth_m = readDepthPng(frame.depth_path, camera_.depth_factor, frame.bgr.size());
+  if (cv::countNonZero(frame.depth_m) == 0)
+    throw InputError(frame.depth_path, "depth image has no valid pixel (all 0)");
   return frame;
 }
 

@@ -57,8 +57,10 @@ class TumSequence {
   /// groundtruth.txt if present.
   [[nodiscard]] std::optional<std::filesystem::path> groundTruthPath() const;
 
-  /// Loads frame i. Throws InputError (naming the file) when an image is missing, corrupt, or of
-  /// the wrong type or size; callers that can go on count and log the skip.
+  /// Loads frame i. Throws InputError (naming the file) when an image is missing, empty,
+  /// truncated, corrupt, of the wrong type or size, when the colour image is all black,
+  /// saturated or flat, or when no depth pixel is valid; callers that can go on count and log
+  /// the skip (SequenceSource: stats.json `skipped_corrupt`).
   [[nodiscard]] RgbdFrame load(size_t i) const;
 
  private:

@@ -10,9 +10,17 @@
 namespace dynanav {
 
 std::vector<TextLine> readContentLines(const std::filesystem::path& path) {
+  // A folder, a device (/dev/zero would be read forever) or a symlink loop is not a text file.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path.string(), "not a regular file");
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw InputError(path.string(), "cannot read file: " + ec.message());
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw InputError(path.string(), std::filesystem::exists(path) ? "cannot read file" : "file not found");
+    throw InputError(path.string(),
+                     std::filesystem::exists(path) ? "cannot read file" : "file not found");
   }
   std::vector<TextLine> lines;
   std::string raw;

@@ -8,8 +8,8 @@
 namespace dynanav {
 
 struct TextLine {
-  int number = 0;     ///< 1-based
-  std::string text;   ///< without CR/LF, trimmed
+  int number = 0;    ///< 1-based
+  std::string text;  ///< without CR/LF, trimmed
 };
 
 /// Content lines of a text file. Throws InputError if the file cannot be opened.

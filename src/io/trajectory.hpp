@@ -21,13 +21,18 @@ std::vector<StampedPose> readTrajectory(const std::filesystem::path& path);
 /// One TUM line (no newline), 9 significant digits for poses and 6 decimals for stamps.
 std::string formatTumLine(const StampedPose& pose);
 
-/// Appends poses and flushes each line, so an interrupted run keeps what it wrote.
+/// Appends poses and flushes each line, so an interrupted run keeps what it wrote. Every write
+/// is checked: a full disk or an I/O error is an InputError naming the file, never a short file.
 class TrajectoryWriter {
  public:
   explicit TrajectoryWriter(const std::filesystem::path& path);
   void write(const StampedPose& pose);
+  /// Closes the file, throwing InputError if the last bytes could not be written.
+  void close();
 
  private:
+  void check(const char* what);
+  std::filesystem::path path_;
   std::ofstream out_;
 };
 

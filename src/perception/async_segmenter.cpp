@@ -1,10 +1,19 @@
 #include "perception/async_segmenter.hpp"
 
+#include <spdlog/spdlog.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 namespace dynanav {
 
 AsyncSegmenter::AsyncSegmenter(std::unique_ptr<Segmenter> inner, const PerceptionConfig& config,
                                StageTimers* timers)
-    : inner_(std::move(inner)), timers_(timers), propagator_(config), worker_([this] { work(); }) {}
+    : inner_(std::move(inner)),
+      timers_(timers),
+      nice_(config.segmenter_nice),
+      propagator_(config),
+      worker_([this] { work(); }) {}
 
 AsyncSegmenter::~AsyncSegmenter() {
   {
@@ -21,6 +30,10 @@ long AsyncSegmenter::finished() const {
 }
 
 void AsyncSegmenter::work() {
+  // The segmenter uses what tracking leaves of the CPU: a late mask is carried by flow, a late
+  // pose is a dropped frame. Linux gives each thread its own nice value.
+  if (nice_ > 0 && setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice_) != 0)
+    spdlog::warn("segmenter thread: cannot set nice {}: it competes with tracking", nice_);
   for (;;) {
     RgbdFrame frame;
     {
@@ -53,6 +66,19 @@ void AsyncSegmenter::work() {
 }
 
 Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
+  if (!started_) {
+    // The first frame is segmented here, before the worker has anything: SLAM initialises its
+    // map from this frame, and must not take the people in it for scenery.
+    started_ = true;
+    Instances first;
+    {
+      std::optional<ScopedTimer> timer;
+      if (timers_) timer.emplace(*timers_, "segmenter_thread");
+      first = inner_->segment(frame);
+    }
+    propagator_.setReference(frame, first);
+    return first;
+  }
   std::optional<Result> result;
   {
     std::lock_guard lock(mutex_);

@@ -25,7 +25,8 @@ class AsyncSegmenter final : public Segmenter {
   AsyncSegmenter& operator=(const AsyncSegmenter&) = delete;
 
   /// Hands the frame to the worker if it is idle and returns the newest finished segmentation
-  /// propagated to this frame (no instances until the first one is finished). Rethrows, once,
+  /// propagated to this frame. The first frame is segmented in the caller's thread (the map is
+  /// initialised from it). Rethrows, once,
   /// an exception the inner segmenter threw.
   Instances segment(const RgbdFrame& frame) override;
   [[nodiscard]] std::string name() const override { return inner_->name() + "/async"; }
@@ -42,8 +43,10 @@ class AsyncSegmenter final : public Segmenter {
 
   std::unique_ptr<Segmenter> inner_;
   StageTimers* timers_;
+  int nice_;
   MaskPropagator propagator_;             // used by the caller's thread only
   std::map<std::string, double> timing_;  // the caller's last propagation
+  bool started_ = false;                  // the first frame was segmented in the caller's thread
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<RgbdFrame> pending_;  // given to the worker, not yet taken

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "io/json_io.hpp"
 
 namespace fs = std::filesystem;
 
@@ -109,7 +110,7 @@ Instances MaskFolderWriter::write(const std::string& stem, const Instances& inst
 void MaskFolderWriter::finish() {
   nlohmann::ordered_json instances = nlohmann::ordered_json::object();  // ids in numeric order
   for (const auto& [id, name] : classes_) instances[std::to_string(id)] = {{"class", name}};
-  std::ofstream(dir_ / "masks.json") << nlohmann::ordered_json{{"instances", instances}}.dump(2) << "\n";
+  writeTextFile(dir_ / "masks.json", nlohmann::ordered_json{{"instances", instances}}.dump(2) + "\n");
   finished_ = true;
 }
 

@@ -32,7 +32,13 @@ std::vector<std::filesystem::path> modelSearchPath(const std::string& explicit_d
 std::filesystem::path findModelsDir(const std::string& explicit_dir,
                                     const std::vector<std::string>& required);
 
-/// `dir / relative`, or InputError naming the missing file and how to get it.
+/// Checks a model file: not empty, and for the files we know (every one in model_files) its
+/// SHA-256 is a pinned one, so a truncated or corrupted weights file is refused at load instead
+/// of finding nobody. InputError naming the file otherwise.
+void verifyModelFile(const std::filesystem::path& file, const std::string& relative);
+
+/// `dir / relative` after verifyModelFile(), or InputError naming the missing file and how to
+/// get it.
 std::filesystem::path requireModelFile(const std::filesystem::path& dir,
                                        const std::string& relative);
 

@@ -24,6 +24,11 @@ SequenceSource::SequenceSource(const SequenceSourceOptions& options)
       sequence_(TumSequence::open(options.dir, options.io, options.fallback_camera)) {
   total_ = sequence_.size();
   if (options.max_frames > 0) total_ = std::min<size_t>(total_, options.max_frames);
+  if (total_ > 1) {
+    const auto& pairs = sequence_.pairs();
+    const double first = pairs.front().rgb.stamp_s, last = pairs[total_ - 1].rgb.stamp_s;
+    pass_span_s_ = (last - first) * double(total_) / double(total_ - 1);
+  }
   prefetch();
 }
 
@@ -33,7 +38,13 @@ void SequenceSource::prefetch() {
 }
 
 std::optional<RgbdFrame> SequenceSource::next() {
-  while (position_ < total_) {
+  for (;;) {
+    if (position_ >= total_) {
+      if (pass_ + 1 >= options_.passes || total_ == 0) return std::nullopt;
+      ++pass_;  // the next pass: the same images, later in time, counted on
+      position_ = 0;
+      prefetch();
+    }
     const int index = static_cast<int>(position_);
     RgbdFrame frame;
     try {
@@ -50,9 +61,13 @@ std::optional<RgbdFrame> SequenceSource::next() {
     const auto& blackout = options_.blackout;
     if (blackout && index >= blackout->first && index <= blackout->second)
       frame = blackFrame(frame, camera());
+    if (pass_ > 0) {
+      frame.index += pass_ * int(total_);
+      frame.stamp_s += pass_ * pass_span_s_;
+      frame.depth_stamp_s += pass_ * pass_span_s_;
+    }
     return frame;
   }
-  return std::nullopt;
 }
 
 std::string SequenceSource::describe() const {

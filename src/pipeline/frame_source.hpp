@@ -2,6 +2,7 @@
 // Where frames come from (DESIGN.md §1, FrameSource): a TUM/Bonn folder, the simulator's output
 // (the same layout), later a live camera. A source yields frames in order; frames it cannot read
 // are skipped, logged and counted, never fatal.
+#include <algorithm>
 #include <filesystem>
 #include <future>
 #include <memory>
@@ -35,7 +36,8 @@ struct SequenceSourceOptions {
   IoConfig io;
   std::optional<PinholeCamera> fallback_camera;  ///< used when the folder says nothing
   std::optional<std::pair<int, int>> blackout;   ///< inclusive 0-based frame range made black
-  int max_frames = 0;                            ///< 0 = all
+  int max_frames = 0;                            ///< 0 = all (per pass)
+  int passes = 1;  ///< > 1: play the sequence again and again (a long-run test); time keeps running
 };
 
 /// A TUM-layout folder (TUM, Bonn, `dynanav simulate` output). Decoding the next frame's images
@@ -46,7 +48,9 @@ class SequenceSource final : public FrameSource {
   /// Throws InputError for a missing folder, bad lists or no camera.
   explicit SequenceSource(const SequenceSourceOptions& options);
   std::optional<RgbdFrame> next() override;
-  [[nodiscard]] size_t expected() const override { return total_; }
+  [[nodiscard]] size_t expected() const override {
+    return total_ * size_t(std::max(1, options_.passes));
+  }
   [[nodiscard]] int skipped() const override { return skipped_; }
   [[nodiscard]] const PinholeCamera& camera() const override { return sequence_.camera(); }
   [[nodiscard]] std::string describe() const override;
@@ -57,8 +61,10 @@ class SequenceSource final : public FrameSource {
 
   SequenceSourceOptions options_;
   TumSequence sequence_;
-  size_t total_ = 0;
-  size_t position_ = 0;  // index of the frame being prefetched
+  size_t total_ = 0;     // frames per pass
+  size_t position_ = 0;  // index (within the pass) of the frame being prefetched
+  int pass_ = 0;
+  double pass_span_s_ = 0.0;  // a pass's duration plus one frame interval
   int skipped_ = 0;
   std::future<RgbdFrame> next_;
 };

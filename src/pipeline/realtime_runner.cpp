@@ -4,6 +4,7 @@
 #include <exception>
 #include <thread>
 
+#include "core/interrupt.hpp"
 #include "pipeline/frame_queue.hpp"
 
 namespace dynanav {
@@ -16,8 +17,9 @@ struct Arrival {
 };
 }  // namespace
 
-void runRealtime(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
-                 RunSummary& summary, const RealtimeOptions& options) {
+void runRealtime(FrameSource& source, const ProcessFrame& process,
+                 const std::vector<FrameSink*>& sinks, RunSummary& summary,
+                 const RealtimeOptions& options) {
   FrameQueue<Arrival> queue(options.queue_frames,
                             options.paced ? QueueFullPolicy::kDropOldest : QueueFullPolicy::kBlock);
   const Clock::time_point start = Clock::now();
@@ -25,7 +27,8 @@ void runRealtime(FrameSource& source, System& system, const std::vector<FrameSin
   std::thread camera([&] {
     try {
       double first_stamp_s = -1.0;
-      for (auto frame = source.next(); frame && !queue.closed(); frame = source.next()) {
+      for (auto frame = source.next(); frame && !queue.closed() && !interruptRequested();
+           frame = source.next()) {
         if (options.paced) {  // a camera delivers at its frame times, whatever we do
           if (first_stamp_s < 0) first_stamp_s = frame->stamp_s;
           std::this_thread::sleep_until(
@@ -41,7 +44,7 @@ void runRealtime(FrameSource& source, System& system, const std::vector<FrameSin
   });
   try {
     while (auto item = queue.pop()) {
-      FrameResult result = system.process(item->frame);
+      FrameResult result = process(item->frame);
       result.arrival_s = std::chrono::duration<double>(item->arrival - start).count();
       result.latency_ms =
           std::chrono::duration<double, std::milli>(Clock::now() - item->arrival).count();

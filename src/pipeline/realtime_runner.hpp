@@ -6,11 +6,11 @@
 // loop closing have their own threads inside System (asynchronous segmenter, mapping stage,
 // global BA).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "pipeline/frame_source.hpp"
 #include "pipeline/sinks.hpp"
-#include "pipeline/system.hpp"
 
 namespace dynanav {
 
@@ -19,8 +19,13 @@ struct RealtimeOptions {
   size_t queue_frames = 2;  ///< frames that may wait for processing before the oldest is dropped
 };
 
-/// Runs the whole source; fills `summary` (dropped included).
-void runRealtime(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
-                 RunSummary& summary, const RealtimeOptions& options);
+/// The stage the frames go through (System::process in a run; a fake in tests).
+using ProcessFrame = std::function<FrameResult(const RgbdFrame&)>;
+
+/// Runs the whole source through `process` and the sinks; fills `summary` (dropped included).
+/// FrameResult::arrival_s and latency_ms are set here: from the frame's delivery to its result.
+void runRealtime(FrameSource& source, const ProcessFrame& process,
+                 const std::vector<FrameSink*>& sinks, RunSummary& summary,
+                 const RealtimeOptions& options);
 
 }  // namespace dynanav

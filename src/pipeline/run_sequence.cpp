@@ -2,14 +2,19 @@
 
 #include <spdlog/spdlog.h>
 
+#include <opencv2/core/utility.hpp>
+
 #include <chrono>
 #include <fstream>
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "io/json_io.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/objects_sink.hpp"
 #include "pipeline/realtime_runner.hpp"
+#include "pipeline/run_outputs.hpp"
 #include "pipeline/system.hpp"
 #include "slam/slam_system.hpp"
 
@@ -19,7 +24,7 @@ namespace {
 /// Deterministic mode: every frame in order on this thread.
 void runInOrder(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
                 RunSummary& summary) {
-  while (auto frame = source.next()) {
+  for (auto frame = source.next(); frame && !interruptRequested(); frame = source.next()) {
     const auto arrival = std::chrono::steady_clock::now();
     FrameResult result = system.process(*frame);
     result.latency_ms = msSince(arrival);
@@ -37,18 +42,22 @@ std::string modeName(const RunConfig& run) {
 
 RunSummary runSequence(const RunOptions& options) {
   SequenceSource source({options.sequence_dir, options.config.io, options.fallback_camera,
-                         options.blackout, options.max_frames});
+                         options.blackout, options.max_frames, options.passes});
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec)
     throw InputError(options.out_dir.string(), "cannot create output folder: " + ec.message());
-  {
-    std::ofstream config_out(options.out_dir / "config_used.yaml");
-    config_out << options.config.toYaml();
-  }
+  if (const int removed = removeEarlierRunOutputs(options.out_dir); removed > 0)
+    spdlog::info("{}: replaced {} files of an earlier run", options.out_dir.string(), removed);
+  writeTextFile(options.out_dir / "config_used.yaml", options.config.toYaml());
   spdlog::info("sequence {}: {} frames, camera {} (from {})", source.describe(),
                source.sequence().size(), source.camera().name, source.sequence().cameraSource());
 
+  const RunConfig& run = options.config.run;
+  // Real time: our threads are the parallelism (segmenter, tracking, mapping); OpenCV's pool
+  // threads would compete with tracking at its priority. Deterministic mode keeps OpenCV's default.
+  if (run.realtime && run.realtime_opencv_threads > 0)
+    cv::setNumThreads(run.realtime_opencv_threads);
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
@@ -58,16 +67,20 @@ RunSummary runSequence(const RunOptions& options) {
   if (options.progress) sinks.push_back(&progress);
 
   RunSummary summary;
-  const RunConfig& run = options.config.run;
   const auto start = std::chrono::steady_clock::now();
   if (run.realtime)
-    runRealtime(source, system, sinks, summary, {run.paced, size_t(std::max(1, run.queue_frames))});
+    runRealtime(source, [&system](const RgbdFrame& f) { return system.process(f); }, sinks, summary,
+                {run.paced, size_t(std::max(1, run.queue_frames))});
   else
     runInOrder(source, system, sinks, summary);
   system.finish();
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.skipped = source.skipped();
+  summary.interrupted_by_signal = interruptSignal();
+  if (summary.interrupted_by_signal)
+    spdlog::warn("interrupted by signal {} after {} frames: writing what the run has",
+                 summary.interrupted_by_signal, summary.frames);
   summary.initialised = system.slam().numKeyFrames() > 0;
   const RunEnd end{system, summary, wall_s, modeName(run)};
   for (FrameSink* sink : sinks) sink->finish(end);

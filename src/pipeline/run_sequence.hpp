@@ -19,6 +19,7 @@ struct RunOptions {
   std::optional<PinholeCamera> fallback_camera;  ///< used when the folder says nothing
   std::optional<std::pair<int, int>> blackout;   ///< inclusive 0-based frame range
   int max_frames = 0;                            ///< 0 = all
+  int passes = 1;                                ///< --passes: play the sequence this many times
   bool progress = false;                         ///< progress bar on stderr
 };
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/error.hpp"
 #include "pipeline/system.hpp"
 #include "slam/slam_system.hpp"
 
@@ -29,10 +30,14 @@ void TrajectorySink::finish(const RunEnd& end) {
   writeTrajectory(out_dir_ / "keyframes.txt", slam.keyframePoses());
   // The run is complete: keep the poses as tracked, and replace trajectory.txt by every frame
   // re-anchored on its (since optimised) reference keyframe.
+  online_->close();
   online_.reset();
   std::error_code ec;
   std::filesystem::copy_file(out_dir_ / "trajectory.txt", out_dir_ / "trajectory_online.txt",
                              std::filesystem::copy_options::overwrite_existing, ec);
+  if (ec)
+    throw InputError((out_dir_ / "trajectory_online.txt").string(),
+                     "cannot write: " + ec.message());
   writeTrajectory(out_dir_ / "trajectory.txt", slam.refinedTrajectory());
 }
 

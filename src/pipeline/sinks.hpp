@@ -21,6 +21,8 @@ struct RunSummary {
   int skipped = 0;     ///< unreadable frames (the source's count)
   size_t dropped = 0;  ///< real time: frames dropped because the system was behind
   bool initialised = false;
+  int interrupted_by_signal =
+      0;  ///< SIGINT/SIGTERM/SIGHUP ended the run early (0 = ran to the end)
   std::vector<int> relocalisation_frames;  ///< input frames on which tracking came back (issue 4)
   void add(const FrameResult& result);
 };
@@ -65,6 +67,8 @@ class StatsSink final : public FrameSink {
   std::filesystem::path out_dir_;
   std::vector<double> latency_ms_;
   std::vector<FrameDynamics> dynamics_;
+  std::vector<std::pair<int, double>>
+      rss_mb_;  // (processed frames, resident MiB), every 100 frames
 };
 
 /// A progress bar on stderr.

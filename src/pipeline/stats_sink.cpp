@@ -77,6 +77,7 @@ nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std
 
 void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
   latency_ms_.push_back(result.latency_ms);
+  if (latency_ms_.size() % 100 == 1) rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
   if (result.dynamics) dynamics_.push_back(*result.dynamics);
 }
 
@@ -104,6 +105,7 @@ void StatsSink::finish(const RunEnd& end) {
   const size_t offered = s.frames + s.dropped;
   nlohmann::json stats = {
       {"mode", end.mode},
+      {"interrupted", s.interrupted_by_signal != 0},
       {"frames", s.frames},
       {"tracked", s.tracked},
       {"lost", s.lost},
@@ -125,7 +127,8 @@ void StatsSink::finish(const RunEnd& end) {
       {"fps", end.wall_s > 0 ? s.frames / end.wall_s : 0.0},
       {"stage_ms", stages},
       {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
-      {"peak_rss_mb", peakRssMb()}};
+      {"peak_rss_mb", peakRssMb()},
+      {"rss_mb", rss_mb_}};  // [processed frames, MiB] every 100 frames: the memory curve
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
   writeJsonFile(out_dir_ / "stats.json", stats);

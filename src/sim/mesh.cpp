@@ -106,9 +106,80 @@ void Mesh::addPrism(const Vec3f& base, float radius, float height, int sides, in
   }
 }
 
+void Mesh::addLathe(const std::vector<Vec3f>& profile, int sides, int texture, const Vec2f& uv_span,
+                    const Pose3f& T) {
+  const int rings = int(profile.size());
+  if (rings < 2 || sides < 3) return;
+  // A flat-lit mesh gaining smooth parts: its earlier vertices keep their face normal's role
+  // through a zero normal, which the rasteriser never sees (meshes are either smooth or flat).
+  normals.resize(positions.size(), Vec3f::Zero());
+  std::vector<float> v_at(size_t(rings), 0.0f);  // arc length along the profile
+  for (int i = 1; i < rings; ++i) {
+    const Vec3f d = profile[size_t(i)] - profile[size_t(i - 1)];
+    v_at[size_t(i)] = v_at[size_t(i - 1)] + std::hypot(d.x(), d.y());
+  }
+  const float v_total = std::max(v_at.back(), 1e-6f);
+  const auto point = [&](int i, int j) {
+    const Vec3f& r = profile[size_t(std::clamp(i, 0, rings - 1))];
+    const float a = 2.0f * float(M_PI) * float(j) / float(sides);
+    return Vec3f(-r.y() * std::sin(a), r.x(), -r.z() * std::cos(a));
+  };
+  const int base = int(positions.size());
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j <= sides; ++j) {  // the seam column is duplicated for its texture u
+      // Normal from the grid's neighbours: round the ring x down the profile (outwards).
+      const Vec3f along = point(i, j + 1) - point(i, j - 1);
+      const Vec3f down = point(i + 1, j) - point(i - 1, j);
+      Vec3f n = down.cross(along);
+      const bool pole = profile[size_t(i)].y() <= 0.0f && profile[size_t(i)].z() <= 0.0f;
+      if (pole || n.squaredNorm() < 1e-12f) n = Vec3f(0, i == 0 ? 1.0f : -1.0f, 0);
+      positions.push_back(T * point(i, j));
+      normals.push_back((T.linear() * n).normalized());
+      uvs.emplace_back(uv_span.x() * float(j) / float(sides),
+                       uv_span.y() * v_at[size_t(i)] / v_total);
+    }
+  }
+  const int cols = sides + 1;
+  for (int i = 0; i + 1 < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const int a = base + i * cols + j, b = a + 1, c = a + cols, d = c + 1;
+      // Outward order: with u to the right and v down seen from outside, (a, c, b), (b, c, d)
+      // point their normals towards the viewer.
+      triangles.push_back({{a, c, b}, texture});
+      triangles.push_back({{b, c, d}, texture});
+    }
+  }
+  // Open ends (non-zero radius) are closed with a flat cap facing along the axis.
+  for (int end = 0; end < 2; ++end) {
+    const int i = end == 0 ? 0 : rings - 1;
+    const Vec3f& r = profile[size_t(i)];
+    if (r.y() <= 0.0f && r.z() <= 0.0f) continue;
+    const int centre = int(positions.size());
+    const Vec3f axis_n = T.linear() * Vec3f(0, end == 0 ? 1.0f : -1.0f, 0);
+    positions.push_back(T * Vec3f(0, r.x(), 0));
+    normals.push_back(axis_n);
+    uvs.emplace_back(uv_span.x() * 0.5f, uv_span.y() * v_at[size_t(i)] / v_total);
+    for (int j = 0; j < sides; ++j) {
+      const int a = base + i * cols + j, b = a + 1;
+      const Vec3f n = (positions[size_t(a)] - positions[size_t(centre)])
+                          .cross(positions[size_t(b)] - positions[size_t(centre)]);
+      if (n.dot(axis_n) > 0)
+        triangles.push_back({{centre, a, b}, texture});
+      else
+        triangles.push_back({{centre, b, a}, texture});
+    }
+  }
+}
+
 void Mesh::append(const Mesh& other, const Pose3f& T_this_other) {
   const int base = int(positions.size());
   for (const Vec3f& p : other.positions) positions.push_back(T_this_other * p);
+  if (!other.normals.empty() || !normals.empty()) {
+    normals.resize(size_t(base), Vec3f::Zero());
+    for (size_t i = 0; i < other.positions.size(); ++i)
+      normals.push_back(i < other.normals.size() ? Vec3f(T_this_other.linear() * other.normals[i])
+                                                 : Vec3f::Zero());
+  }
   uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
   for (Triangle t : other.triangles) {
     for (int& i : t.v) i += base;

@@ -21,6 +21,9 @@ struct Mesh {
   std::vector<Vec3f> positions;
   std::vector<Vec2f> uvs;  ///< one per position
   std::vector<Triangle> triangles;
+  /// Optional unit normals, one per position: when present the rasteriser interpolates the
+  /// lighting across each triangle (smooth bodies); when empty every triangle is lit flat.
+  std::vector<Vec3f> normals;
 
   /// A textured rectangle seen from the side where `axis_u` points right and `axis_v` points
   /// down (so its outward normal is axis_v x axis_u). Texture coordinates run from `uv_origin`
@@ -42,6 +45,14 @@ struct Mesh {
   /// A vertical n-sided prism (cylinder stand-in) with caps, base centre at `base`.
   void addPrism(const Vec3f& base, float radius, float height, int sides, int texture,
                 float texels_per_m);
+
+  /// A surface of revolution with elliptic cross-sections (a limb, a torso, a head), placed by
+  /// T_mesh_lathe. The lathe's axis is its local y; `profile` lists (y, radius_x, radius_z) from
+  /// top to bottom, a zero radius closes the end in a point. Texture u runs once round (from the
+  /// back, -z, through -x, the front +z, to +x: to the right seen from outside), v from the
+  /// first ring to the last: `uv_span` texels in all. Smooth normals: the mesh gets `normals`.
+  void addLathe(const std::vector<Vec3f>& profile, int sides, int texture, const Vec2f& uv_span,
+                const Pose3f& T_mesh_lathe = Pose3f::Identity());
 
   /// Appends another mesh transformed by T_this_other.
   void append(const Mesh& other, const Pose3f& T_this_other);

@@ -1,4 +1,4 @@
-// Surface textures: noise, plaster, bricks, wood, tiles, carpet, ceiling, fabric, cardboard, heads.
+// Surface textures: noise, plaster, bricks, wood, tiles, carpet, ceiling, fabric, cardboard.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -227,24 +227,6 @@ cv::Mat cardboard(cv::Size size, Rng& rng) {
   cv::arrowedLine(img, {size.width * 3 / 4, size.height * 7 / 8},
                   {size.width * 3 / 4, size.height * 5 / 8}, cv::Scalar(30, 30, 30), 4);
   speckle(img, size.area() / 2000, 2, rng);
-  return img;
-}
-
-cv::Mat headTexture(cv::Size size, Rng& rng) {
-  const cv::Scalar skin = std::array<cv::Scalar, 4>{
-      cv::Scalar(150, 180, 225), cv::Scalar(95, 130, 175), cv::Scalar(60, 85, 120),
-      cv::Scalar(120, 160, 205)}[size_t(rng.uniformInt(0, 3))];
-  const cv::Scalar hair = cv::Scalar::all(rng.uniformInt(10, 80)) + cv::Scalar(0, 10, 20);
-  cv::Mat img = tinted(fractalNoise(size, 10.0f, 3, rng), skin, 12.0f);
-  cv::rectangle(img, cv::Rect(0, 0, size.width, size.height / 4), hair, cv::FILLED);
-  // The face occupies the middle third of the width (the head box's front face).
-  const int fx = size.width / 3, fw = size.width / 3, h = size.height;
-  cv::circle(img, {fx + fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30),
-             cv::FILLED);
-  cv::circle(img, {fx + 2 * fw / 3, h * 4 / 10}, std::max(2, fw / 12), cv::Scalar(30, 30, 30),
-             cv::FILLED);
-  cv::ellipse(img, {fx + fw / 2, h * 7 / 10}, {fw / 5, h / 20}, 0, 0, 180, cv::Scalar(60, 60, 140),
-              2);
   return img;
 }
 

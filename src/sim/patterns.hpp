@@ -50,7 +50,6 @@ cv::Mat fabric(cv::Size size, Rng& rng);
 cv::Mat cardboard(cv::Size size, Rng& rng);
 cv::Mat screen(cv::Size size, Rng& rng);
 cv::Mat doorPanel(cv::Size size, Rng& rng);
-cv::Mat headTexture(cv::Size size, Rng& rng);  ///< skin, hair, and a face in the middle third
 
 /// Hangs posters, whiteboards, notices, text and blobs on a wall texture (in place).
 void decorateWall(cv::Mat& wall, float texels_per_m, Rng& rng, const PhotoLibrary& photos);

@@ -1,7 +1,9 @@
 #pragma once
-// An articulated walker: torso, head, upper and lower arms and legs, feet, as textured boxes
-// hinged at hips, knees, shoulders and elbows. The gait phase follows the distance walked, so
-// feet keep pace with the ground whatever the speed; standing still brings the limbs to rest.
+// An articulated walker with human proportions: a head (face, hair), neck, shaped torso and
+// pelvis, upper arms, forearms with hands, thighs, shins and feet, each a smooth lathe mesh
+// (elliptic cross-sections, per-vertex normals) hinged at shoulders, elbows, hips and knees.
+// The gait phase follows the distance walked, so feet keep pace with the ground whatever the
+// speed; arms swing against the legs; standing still brings the limbs to rest.
 #include <array>
 #include <memory>
 #include <vector>
@@ -22,7 +24,7 @@ struct BodyPose {
 
 class Person {
  public:
-  /// Builds the body parts with fresh clothing textures in `world`.
+  /// Builds the body parts with fresh skin, hair and clothing textures in `world`.
   Person(World& world, Rng& rng, float texels_per_m);
 
   /// The body's parts for one frame, tagged with `instance_id`.
@@ -32,11 +34,10 @@ class Person {
 
  private:
   enum Part {
-    kTorso,
-    kHead,
+    kBody,  ///< torso, pelvis, neck and head: one rigid piece
     kUpperArmL,
     kUpperArmR,
-    kForearmL,
+    kForearmL,  ///< with the hand
     kForearmR,
     kThighL,
     kThighR,

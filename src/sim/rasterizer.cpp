@@ -14,6 +14,7 @@ constexpr double kEdgeTolerancePx = 1e-7;
 struct ClipVertex {
   Vec3f p;
   Vec2f uv;
+  float shade;
 };
 
 /// Sutherland–Hodgman against z >= near: a triangle becomes 0, 1 or 2 triangles.
@@ -27,7 +28,8 @@ int clipNear(const ClipVertex in[3], ClipVertex out[4]) {
     if (a_in) out[n++] = a;
     if (a_in != b_in) {
       const float t = (Rasterizer::kNearPlaneM - a.p.z()) / (b.p.z() - a.p.z());
-      out[n++] = {a.p + t * (b.p - a.p), a.uv + t * (b.uv - a.uv)};
+      out[n++] = {a.p + t * (b.p - a.p), a.uv + t * (b.uv - a.uv),
+                  a.shade + t * (b.shade - a.shade)};
     }
   }
   return n;
@@ -46,6 +48,7 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
   for (const DrawItem& item : items) {
     const Mesh& mesh = *item.mesh;
     const Pose3f T_camera_mesh = T_camera_world * item.T_world_mesh;
+    const bool smooth = mesh.normals.size() == mesh.positions.size();
     p_camera.resize(mesh.positions.size());
     for (size_t i = 0; i < mesh.positions.size(); ++i)
       p_camera[i] = T_camera_mesh * mesh.positions[i];
@@ -62,9 +65,21 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
       const Vec3f n_unit = n / (2.0f * area_m2);
       // Lambert shading with the normal in the world (room) frame: the lights do not follow us.
       const Vec3f n_world = T_camera_world.linear().transpose() * n_unit;
-      const float shade =
-          lighting.ambient +
-          lighting.diffuse * std::max(0.0f, n_world.dot(lighting.towards_light_world));
+      const auto lambert = [&](const Vec3f& normal_world) {
+        return lighting.ambient +
+               lighting.diffuse * std::max(0.0f, normal_world.dot(lighting.towards_light_world));
+      };
+      const float flat = lambert(n_world);
+      float shade[3] = {flat, flat, flat};
+      // Smooth parts (bodies) interpolate the light between vertex normals (Gouraud), so a
+      // limb's shading turns with its surface instead of showing facets. Zero normals: flat.
+      bool smooth_tri = smooth;
+      for (int k = 0; k < 3 && smooth_tri; ++k) {
+        const Vec3f& n_mesh = mesh.normals[size_t(t.v[size_t(k)])];
+        smooth_tri = n_mesh.squaredNorm() > 0.5f;
+        if (smooth_tri) shade[k] = lambert(item.T_world_mesh.linear() * n_mesh);
+      }
+      if (!smooth_tri) shade[0] = shade[1] = shade[2] = flat;
       // Mip level from the footprint: texels per metre on the surface, metres per pixel at
       // depth z on a surface tilted by theta is z / (fx cos theta).
       const float uv_area = 0.5f * std::abs((uv[1] - uv[0]).x() * (uv[2] - uv[0]).y() -
@@ -73,13 +88,15 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
       const float cos_view = std::abs(n_unit.dot(centroid.normalized()));
       const float texels_per_m = std::sqrt(uv_area / area_m2);
       const float mip_k = texels_per_m / (float(camera.fx) * std::max(cos_view, 0.25f));
-      ClipVertex in[3] = {{p[0], uv[0]}, {p[1], uv[1]}, {p[2], uv[2]}};
+      ClipVertex in[3] = {
+          {p[0], uv[0], shade[0]}, {p[1], uv[1], shade[1]}, {p[2], uv[2], shade[2]}};
       ClipVertex clipped[4];
       const int count = clipNear(in, clipped);
       for (int k = 1; k + 1 < count; ++k) {
         const Vec3f q[3] = {clipped[0].p, clipped[k].p, clipped[k + 1].p};
         const Vec2f quv[3] = {clipped[0].uv, clipped[k].uv, clipped[k + 1].uv};
-        addTriangle(camera, q, quv, t.texture, shade, mip_k, item.instance_id);
+        const float qshade[3] = {clipped[0].shade, clipped[k].shade, clipped[k + 1].shade};
+        addTriangle(camera, q, quv, t.texture, qshade, smooth_tri, mip_k, item.instance_id);
       }
     }
   }
@@ -102,7 +119,8 @@ void Rasterizer::render(const PinholeCamera& camera, const Pose3f& T_camera_worl
 }
 
 void Rasterizer::addTriangle(const PinholeCamera& camera, const Vec3f p[3], const Vec2f uv[3],
-                             int texture, float shade, float mip_k, uint16_t instance) {
+                             int texture, const float shade[3], bool smooth, float mip_k,
+                             uint16_t instance) {
   double sx[3], sy[3];
   for (int i = 0; i < 3; ++i) {
     sx[i] = camera.fx * p[i].x() / p[i].z() + camera.cx;
@@ -131,7 +149,8 @@ void Rasterizer::addTriangle(const PinholeCamera& camera, const Vec3f p[3], cons
   t.ymax = std::min(height_ - 1, int(std::floor(ymax + kEdgeTolerancePx)));
   if (t.xmin > t.xmax || t.ymin > t.ymax) return;
   t.texture = texture;
-  t.shade = shade;
+  for (int i = 0; i < 3; ++i) t.shade[i] = shade[i];
+  t.smooth = smooth;
   t.mip_k = mip_k;
   t.instance = instance;
   tris_.push_back(t);
@@ -217,7 +236,9 @@ void Rasterizer::shadeRows(int y0, int y1, const TextureSet& textures, RenderBuf
       const int level = std::max(0, int((bits >> 23) & 0xFF) - 127);
       float c[3];
       textures[size_t(t.texture)].sample(uv.x(), uv.y(), level, c);
-      for (int k = 0; k < 3; ++k) bgr[3 * x + k] = cv::saturate_cast<uint8_t>(c[k] * t.shade);
+      const float shade =
+          t.smooth ? w0 * t.shade[0] + w1 * t.shade[1] + w2 * t.shade[2] : t.shade[0];
+      for (int k = 0; k < 3; ++k) bgr[3 * x + k] = cv::saturate_cast<uint8_t>(c[k] * shade);
       depth[x] = z;
       inst[x] = t.instance;
     }

@@ -2,8 +2,9 @@
 // A CPU z-buffer rasteriser for textured triangle meshes: the simulator's "camera".
 // Two passes: visibility (per pixel: nearest triangle, its screen-space barycentrics and 1/z),
 // then shading once per visible pixel (perspective-correct texture coordinates, mip level from
-// the pixel's footprint, flat Lambert lighting). Pixel (u, v) is sampled at its centre, which
-// sits at integer coordinates in the pinhole model used throughout (cx = 319.5 for 640 columns).
+// the pixel's footprint, Lambert lighting: flat, or between vertex normals). Pixel (u, v) is
+// sampled at its centre, which sits at integer coordinates in the pinhole model used throughout (cx
+// = 319.5 for 640 columns).
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -45,14 +46,15 @@ class Rasterizer {
     Vec2f uv[3];
     int ymin, ymax, xmin, xmax;
     int texture;
-    float shade;
-    float mip_k;  ///< texels per pixel = mip_k * z
+    float shade[3];  ///< light factor per vertex (all equal for flat-lit triangles)
+    bool smooth;     ///< interpolate shade (Gouraud) rather than use shade[0]
+    float mip_k;     ///< texels per pixel = mip_k * z
     uint16_t instance;
   };
 
  private:
   void addTriangle(const PinholeCamera& camera, const Vec3f p_camera[3], const Vec2f uv[3],
-                   int texture, float shade, float mip_k, uint16_t instance);
+                   int texture, const float shade[3], bool smooth, float mip_k, uint16_t instance);
   void rasterRows(int y0, int y1);
   void shadeRows(int y0, int y1, const TextureSet& textures, RenderBuffers& out) const;
 

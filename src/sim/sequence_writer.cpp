@@ -51,6 +51,9 @@ WriteStats writeSequence(Simulator& sim, const fs::path& out_dir,
     writePng(out_dir / "masks" / name, f.instance);
     rgb_list << Simulator::stampName(f.stamp_s) << " rgb/" << name << "\n" << std::flush;
     depth_list << Simulator::stampName(f.stamp_s) << " depth/" << name << "\n" << std::flush;
+    if (!rgb_list || !depth_list)
+      throw InputError((out_dir / "rgb.txt").string(),
+                       "writing the image lists failed (disk full?)");
     groundtruth.write({f.stamp_s, f.T_world_camera});
     objects.write(f.objects);
   };
@@ -62,6 +65,7 @@ WriteStats writeSequence(Simulator& sim, const fs::path& out_dir,
     if (progress) progress(i);
   }
   if (pending.valid()) pending.get();
+  groundtruth.close();
   WriteStats stats;
   stats.frames = sim.frameCount();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -94,6 +94,7 @@ SimFrame Simulator::render(int i) {
     for (int x = 0; x < f.instance.cols; ++x) ++pixels[row[x]];
   }
   const SE3 T_camera_world = f.T_world_camera.inverse();
+  if (options_.readout_s > 0.0) drawItems(i, items_);  // the bands left the last band's scene
   std::vector<TrackedObject> objects;
   for (const Mover& m : scene_->movers) {
     TrackedObject& o = objects.emplace_back();
@@ -105,34 +106,29 @@ SimFrame Simulator::render(int i) {
     fillViewGeometry(o);
     o.dynamic = o.speed_mps > 1e-6;
     o.points = pixels[m.id];
-    const int alone_px = unoccludedPixels(m.id, f.stamp_s, T_camera_world);
-    o.visible_share = alone_px > 0 ? std::min(1.0, double(o.points) / alone_px) : 0.0;
+    o.visible_share = inViewShare(m.id, pixels[m.id], T_camera_world);  // objects_gt in_view
   }
   f.objects = objectsFrameJson(f.stamp_s, objects);
   return f;
 }
 
-int Simulator::unoccludedPixels(uint16_t mover_id, double stamp_s,
-                                const SE3& T_camera_world) const {
-  // The mover alone, at half resolution on a canvas three times the image's field of view in
-  // each direction (the image sits in its middle): what the camera would see of it with nothing
-  // in front and no image border. One half-size pixel stands for four of the image's.
-  std::vector<DrawItem> items;
-  drawItemsAt(stamp_s, items);
-  std::erase_if(items, [&](const DrawItem& d) { return d.instance_id != mover_id; });
-  if (items.empty()) return 0;
+double Simulator::inViewShare(uint16_t id, int visible_px, const SE3& T_camera_world) {
+  if (visible_px == 0) return 0.0;
+  // The object alone, seen by a camera with the same centre and orientation but three times
+  // the field of view each way at a third of the resolution: its whole silhouette (unless it
+  // is closer than about 0.4 m) without occluders, in pixels of the real image (x 9).
+  silhouette_items_.clear();
+  for (const DrawItem& item : items_)
+    if (item.instance_id == id) silhouette_items_.push_back(item);
   PinholeCamera wide = camera_;
-  wide.width = 3 * camera_.width / 2;
-  wide.height = 3 * camera_.height / 2;
-  wide.fx = camera_.fx / 2;
-  wide.fy = camera_.fy / 2;
-  wide.cx = (camera_.cx + 0.5) / 2 - 0.5 + camera_.width / 2.0;
-  wide.cy = (camera_.cy + 0.5) / 2 - 0.5 + camera_.height / 2.0;
-  wide.readout_s = 0.0;
-  Rasterizer rasterizer;
-  RenderBuffers buffers;
-  rasterizer.render(wide, T_camera_world.cast<float>(), items, scene_->world.textures, buffers);
-  return 4 * cv::countNonZero(buffers.instance == mover_id);
+  wide.fx = wide.fy = camera_.fx / 3.0;
+  wide.cx = (camera_.cx + camera_.width) / 3.0;
+  wide.cy = (camera_.cy + camera_.height) / 3.0;
+  RenderBuffers alone;
+  rasterizer_.render(wide, T_camera_world.cast<float>(), silhouette_items_, scene_->world.textures,
+                     alone);
+  const double silhouette_px = 9.0 * cv::countNonZero(alone.instance == id);
+  return silhouette_px > 0.0 ? std::min(1.0, visible_px / silhouette_px) : 0.0;
 }
 
 void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting,

@@ -77,12 +77,12 @@ class Simulator {
   int frames_ = 0;
   /// Renders frame f's image band by band, each band from the pose and scene at its rows' time.
   void renderRollingShutter(const SimFrame& f, const Lighting& lighting, RenderBuffers& out);
-  /// Image pixels mover `mover_id` would cover with nothing in front and no image border
-  /// (the denominator of objects_gt.jsonl's visible_share).
-  [[nodiscard]] int unoccludedPixels(uint16_t mover_id, double stamp_s,
-                                     const SE3& T_camera_world) const;
+  /// Share of object `id`'s whole silhouette (inside the image or not, occluded or not) that
+  /// shows in this frame: visible_px / the pixels it would cover alone on an unbounded image.
+  /// Uses items_ (this frame's scene).
+  double inViewShare(uint16_t id, int visible_px, const SE3& T_camera_world);
   Rasterizer rasterizer_;
-  std::vector<DrawItem> items_;
+  std::vector<DrawItem> items_, silhouette_items_;
 };
 
 struct WriteStats {

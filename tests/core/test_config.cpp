@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "core/config.hpp"
 #include "core/error.hpp"
 
@@ -53,4 +55,49 @@ TEST(Config, LoadMissingFileNamesIt) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/config.yaml"), std::string::npos);
   }
+}
+
+TEST(Config, DefaultsAreInsideTheirRanges) {
+  EXPECT_NO_THROW(Config{}.validate("defaults"));
+}
+
+TEST(Config, RejectsOutOfRangeNamingFileAndKey) {
+  const std::vector<std::string> bad = {
+      "orb:\n  n_features: 0\n",          "orb:\n  n_features: 100000000\n",
+      "orb:\n  scale_factor: 1.0\n",      "orb:\n  scale_factor: .nan\n",
+      "orb:\n  n_levels: -3\n",           "tracking:\n  depth_max_m: .inf\n",
+      "tracking:\n  local_nn_ratio: 0\n", "mapping:\n  ba_linear_solver: cholesky\n",
+      "run:\n  segment_every: 0\n",       "run:\n  segmenter: magic\n",
+      "io:\n  max_association_dt_s: -1\n", "perception:\n  flow_scale: 2\n",
+      "dynamics:\n  sample_step_px: 0\n", "loop:\n  loop_min_ransac_inliers: 2\n"};
+  for (const auto& yaml : bad) {
+    const std::string key = yaml.substr(yaml.find("  ") + 2, yaml.find(':', yaml.find("  ")) -
+                                                                  yaml.find("  ") - 2);
+    try {
+      Config::parse(yaml, "bad.yaml");
+      ADD_FAILURE() << "accepted: " << yaml;
+    } catch (const ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("bad.yaml"), std::string::npos) << what;
+      EXPECT_NE(what.find("'" + key + "'"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(Config, ValidateCatchesValuesSetAfterLoading) {
+  Config c;
+  c.run.queue_frames = 0;
+  try {
+    c.validate("flags");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("queue_frames"), std::string::npos);
+  }
+}
+
+TEST(Config, EchoShowsTheRange) {
+  const std::string yaml = Config{}.toYaml();
+  EXPECT_NE(yaml.find("scale_factor: 1.2  # scale between pyramid levels (valid: (1, 4])"),
+            std::string::npos);
+  EXPECT_NE(yaml.find("(valid: auto | dnn | hog | masks | none)"), std::string::npos);
 }

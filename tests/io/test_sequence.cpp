@@ -25,7 +25,9 @@ fs::path makeSequence(const std::string& tag, int n) {
   std::string rgb = "# color images\r\n# timestamp filename\r\n", depth = "# depth\n\n";
   for (int i = 0; i < n; ++i) {
     const std::string stamp = std::to_string(100.0 + i / 30.0);
-    cv::imwrite((dir / "rgb" / (stamp + ".png")).string(), cv::Mat(48, 64, CV_8UC3, cv::Scalar(i, 2 * i, 3)));
+    cv::Mat colour(48, 64, CV_8UC3);
+    cv::RNG(i + 1).fill(colour, cv::RNG::UNIFORM, 0, 256);  // texture: flat frames are skipped
+    cv::imwrite((dir / "rgb" / (stamp + ".png")).string(), colour);
     cv::Mat d(48, 64, CV_16UC1, cv::Scalar(5000 + 500 * i));
     d.at<uint16_t>(0, 0) = 0;
     cv::imwrite((dir / "depth" / (stamp + ".png")).string(), d);
@@ -37,6 +39,8 @@ fs::path makeSequence(const std::string& tag, int n) {
   PinholeCamera cam;
   cam.width = 64;
   cam.height = 48;
+  cam.cx = 31.5;
+  cam.cy = 23.5;
   saveCameraYaml(dir / "camera.yaml", cam);
   return dir;
 }

@@ -1,6 +1,9 @@
 #pragma once
 // Config section `dynamics` (see core/config.hpp for how sections are loaded and echoed).
-// To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+// To add a tunable: the member with its default, and one v("key", member, "doc", valid) line in
+// visit(); `valid` (core/config/range.hpp) is the documented range the loader enforces.
+#include "core/config/range.hpp"
+
 #include <string>
 #include <vector>
 
@@ -23,41 +26,60 @@ struct DynamicsConfig {
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
       "classes that may move: their keypoints never enter the initial pose estimate or the map");
     v("prior_mask_dilate_px", prior_mask_dilate_px,
       "prior-dynamic masks are grown by this many pixels before ORB extraction (mask edges lag "
-      "fast limbs; ORB's 31 px patch straddles the outline)");
+      "fast limbs; ORB's 31 px patch straddles the outline)",
+      Range{0, 200});
     v("prior_box_depth_band_m", prior_box_depth_band_m,
       "a prior object's box also claims pixels within this depth (m) of its mask's median depth "
-      "(catches a head or arm the mask model missed; 0 = masks only)");
+      "(catches a head or arm the mask model missed; 0 = masks only)",
+      Range{0, 100});
     v("depth_diff_min_m", depth_diff_min_m,
-      "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint");
+      "depth-difference test: smallest |measured - predicted| depth (m) that flags a keypoint",
+      Range{0, 100});
     v("depth_diff_per_z2", depth_diff_per_z2,
-      "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with z^2)");
+      "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with "
+      "z^2)",
+      Range{0, 100});
     v("instance_dynamic_share", instance_dynamic_share,
-      "an instance moves when this share of its checked keypoints fails the depth test");
-    v("instance_min_points", instance_min_points, "fewest checked keypoints for an instance verdict");
+      "an instance moves when this share of its checked keypoints fails the depth test",
+      Range{0, 1});
+    v("instance_min_points", instance_min_points,
+      "fewest checked keypoints for an instance verdict", Range{1, 100000});
     v("scene_flow_point_m", scene_flow_point_m,
-      "scene flow: a point moves if it moved more than this (m) between frames after ego-motion (paper: 0.02)");
+      "scene flow: a point moves if it moved more than this (m) between frames after ego-motion "
+      "(paper: 0.02)",
+      Range{0, 100, Range::kOpenLow});
     v("scene_flow_share", scene_flow_share,
-      "scene flow: an object is dynamic when more than this share of its points moves (paper: 30 %)");
-    v("scene_flow_min_points", scene_flow_min_points, "fewest tracked points for a scene-flow verdict");
+      "scene flow: an object is dynamic when more than this share of its points moves (paper: 30 "
+      "%)",
+      Range{0, 1});
+    v("scene_flow_min_points", scene_flow_min_points,
+      "fewest tracked points for a scene-flow verdict", Range{1, 100000});
     v("scene_flow_gap_frames", scene_flow_gap_frames,
-      "scene flow is measured between a frame and the one this many frames earlier (a box pushed at "
-      "0.5 m/s moves only 1.7 cm per frame at 30 Hz, under the 0.02 m threshold)");
+      "scene flow is measured between a frame and the one this many frames earlier (a box pushed "
+      "at "
+      "0.5 m/s moves only 1.7 cm per frame at 30 Hz, under the 0.02 m threshold)",
+      Range{1, 1000});
     v("scene_flow_mean_check", scene_flow_mean_check,
       "scene flow: the object's mean displacement vector must also exceed scene_flow_point_m "
       "(depth noise moves single points, not the mean)");
     v("cull_vanished_points", cull_vanished_points,
-      "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is gone: "
-      "it lay on something that moved, and is removed from the map (off: on Bonn crowd it cost accuracy, "
+      "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is "
+      "gone: "
+      "it lay on something that moved, and is removed from the map (off: on Bonn crowd it cost "
+      "accuracy, "
       "0.0191 -> 0.0247 m, docs/dynamics.md)");
     v("cull_moving_object_points", cull_moving_object_points,
-      "map points matched on an object voted moving (depth vote or scene flow) are removed from the map: "
+      "map points matched on an object voted moving (depth vote or scene flow) are removed from "
+      "the map: "
       "they were mapped while it stood still and are no longer where the map says");
-    v("sample_step_px", sample_step_px, "object points are sampled every this many pixels in the mask");
+    v("sample_step_px", sample_step_px,
+      "object points are sampled every this many pixels in the mask", Range{1, 1000});
   }
 };
 

@@ -1,6 +1,9 @@
 #pragma once
 // Config section `loop` (see core/config.hpp for how sections are loaded and echoed).
-// To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+// To add a tunable: the member with its default, and one v("key", member, "doc", valid) line in
+// visit(); `valid` (core/config/range.hpp) is the documented range the loader enforces.
+#include "core/config/range.hpp"
+
 #include <string>
 #include <vector>
 
@@ -25,33 +28,50 @@ struct LoopConfig {
   int essential_graph_iterations = 20;
   bool global_ba = true;
   int global_ba_iterations = 10;
-  template <class V> void visit(V&& v) {
+  template <class V>
+  void visit(V&& v) {
     v("vocabulary", vocabulary,
-      "ORB vocabulary file; empty: $DYNANAV_VOCABULARY, else <build>/share/dynanav/orb_vocabulary.dnvoc");
+      "ORB vocabulary file; empty: $DYNANAV_VOCABULARY, else "
+      "<build>/share/dynanav/orb_vocabulary.dnvoc");
     v("direct_index_depth", direct_index_depth,
-      "vocabulary depth whose nodes group features for guided matching (1 = root's children)");
+      "vocabulary depth whose nodes group features for guided matching (1 = root's children)",
+      Range{1, 10});
     v("min_common_words_ratio", min_common_words_ratio,
-      "place candidates share at least this fraction of the best candidate's shared words");
+      "place candidates share at least this fraction of the best candidate's shared words",
+      Range{0, 1});
     v("min_accumulated_ratio", min_accumulated_ratio,
-      "place candidates' covisibility-group score reaches this fraction of the best group's");
-    v("relocalisation", relocalisation, "recover a lost camera by place recognition (needs the vocabulary)");
+      "place candidates' covisibility-group score reaches this fraction of the best group's",
+      Range{0, 1});
+    v("relocalisation", relocalisation,
+      "recover a lost camera by place recognition (needs the vocabulary)");
     v("loop_closing", loop_closing, "detect and close loops (needs the vocabulary)");
     v("reloc_min_bow_matches", reloc_min_bow_matches,
-      "relocalisation: a candidate keyframe needs this many direct-index matches before EPnP");
-    v("reloc_min_inliers", reloc_min_inliers, "relocalisation: pose-optimisation inliers to accept a pose");
+      "relocalisation: a candidate keyframe needs this many direct-index matches before EPnP",
+      Range{1, 100000});
+    v("reloc_min_inliers", reloc_min_inliers,
+      "relocalisation: pose-optimisation inliers to accept a pose", Range{1, 100000});
     v("loop_min_keyframes", loop_min_keyframes,
-      "no loop search while the map has fewer keyframes, nor within this many keyframes of the last loop");
+      "no loop search while the map has fewer keyframes, nor within this many keyframes of the "
+      "last loop",
+      Range{1, 100000});
     v("loop_consistency", loop_consistency,
-      "a loop candidate must be found again by this many consecutive keyframes (ORB-SLAM2: 3)");
-    v("loop_min_bow_matches", loop_min_bow_matches, "loop: direct-index matches needed before the SE(3) RANSAC");
-    v("loop_min_ransac_inliers", loop_min_ransac_inliers, "loop: 3D-3D RANSAC inliers needed");
+      "a loop candidate must be found again by this many consecutive keyframes (ORB-SLAM2: 3)",
+      Range{1, 100});
+    v("loop_min_bow_matches", loop_min_bow_matches,
+      "loop: direct-index matches needed before the SE(3) RANSAC", Range{1, 100000});
+    v("loop_min_ransac_inliers", loop_min_ransac_inliers, "loop: 3D-3D RANSAC inliers needed",
+      Range{3, 100000});
     v("loop_min_matches", loop_min_matches,
-      "loop: matches with the loop keyframe's covisible points after projection to accept the loop");
+      "loop: matches with the loop keyframe's covisible points after projection to accept the loop",
+      Range{1, 100000});
     v("essential_graph_min_weight", essential_graph_min_weight,
-      "covisibility edges with at least this many shared points enter the essential graph");
-    v("essential_graph_iterations", essential_graph_iterations, "Ceres iterations of the essential-graph optimisation");
+      "covisibility edges with at least this many shared points enter the essential graph",
+      Range{1, 100000});
+    v("essential_graph_iterations", essential_graph_iterations,
+      "Ceres iterations of the essential-graph optimisation", Range{1, 1000});
     v("global_ba", global_ba, "run a global bundle adjustment after a loop correction");
-    v("global_ba_iterations", global_ba_iterations, "Ceres iterations per global BA pass");
+    v("global_ba_iterations", global_ba_iterations, "Ceres iterations per global BA pass",
+      Range{1, 1000});
   }
 };
 

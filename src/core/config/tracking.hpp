@@ -1,7 +1,10 @@
 #pragma once
 // Config section `tracking` (see core/config.hpp for how sections are loaded and echoed).
-// To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+// To add a tunable: the member with its default, and one v("key", member, "doc", valid) line in
+// visit(); `valid` (core/config/range.hpp) is the documented range the loader enforces.
 // Defaults follow ORB-SLAM2 (Mur-Artal & Tardos, T-RO 2017) for RGB-D input.
+#include "core/config/range.hpp"
+
 #include <string>
 #include <vector>
 
@@ -27,37 +30,52 @@ struct TrackingConfig {
   int keyframe_close_untracked_max = 70;
   int new_points_min = 100;
   double rolling_shutter_readout_ms = -1.0;
-  template <class V> void visit(V&& v) {
-    v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored");
+  template <class V>
+  void visit(V&& v) {
+    v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored",
+      Range{0, 100, Range::kOpenLow});
     v("init_min_depth_features", init_min_depth_features,
-      "keypoints with valid depth needed to initialise the map from one frame");
+      "keypoints with valid depth needed to initialise the map from one frame", Range{1, 100000});
     v("motion_search_radius_px", motion_search_radius_px,
-      "motion-model projection search radius (px at level 0; doubled on a retry)");
-    v("motion_min_matches", motion_min_matches, "matches below which the motion model fails");
+      "motion-model projection search radius (px at level 0; doubled on a retry)", Range{1, 1000});
+    v("motion_min_matches", motion_min_matches, "matches below which the motion model fails",
+      Range{1, 100000});
     v("reference_min_matches", reference_min_matches,
-      "descriptor matches with the reference keyframe below which that fallback fails");
-    v("min_map_matches", min_map_matches, "inlier map matches needed after the first pose fit");
+      "descriptor matches with the reference keyframe below which that fallback fails",
+      Range{1, 100000});
+    v("min_map_matches", min_map_matches, "inlier map matches needed after the first pose fit",
+      Range{1, 100000});
     v("local_map_min_inliers", local_map_min_inliers,
-      "inliers after local-map tracking below which the frame is lost");
+      "inliers after local-map tracking below which the frame is lost", Range{1, 100000});
     v("local_search_radius_factor", local_search_radius_factor,
-      "local-map projection search radius factor (ORB-SLAM2: 1 for RGB-D)");
-    v("local_nn_ratio", local_nn_ratio, "best/second-best descriptor ratio in local-map search");
-    v("max_local_keyframes", max_local_keyframes, "cap on keyframes in the local map");
-    v("pose_rounds", pose_rounds, "pose-only optimisation rounds (outliers re-classified each)");
-    v("pose_iterations", pose_iterations, "solver iterations per pose-optimisation round");
+      "local-map projection search radius factor (ORB-SLAM2: 1 for RGB-D)",
+      Range{0, 100, Range::kOpenLow});
+    v("local_nn_ratio", local_nn_ratio, "best/second-best descriptor ratio in local-map search",
+      Range{0, 1, Range::kOpenLow});
+    v("max_local_keyframes", max_local_keyframes, "cap on keyframes in the local map",
+      Range{1, 10000});
+    v("pose_rounds", pose_rounds, "pose-only optimisation rounds (outliers re-classified each)",
+      Range{1, 100});
+    v("pose_iterations", pose_iterations, "solver iterations per pose-optimisation round",
+      Range{1, 1000});
     v("keyframe_max_frames", keyframe_max_frames,
-      "frames after which a keyframe may be inserted regardless of mapping state");
+      "frames after which a keyframe may be inserted regardless of mapping state",
+      Range{1, 100000});
     v("keyframe_ref_ratio", keyframe_ref_ratio,
-      "insert a keyframe when tracked matches fall below this share of the reference's points");
+      "insert a keyframe when tracked matches fall below this share of the reference's points",
+      Range{0, 1});
     v("keyframe_close_tracked_min", keyframe_close_tracked_min,
-      "close points tracked below which (with many untracked close ones) a keyframe is needed");
+      "close points tracked below which (with many untracked close ones) a keyframe is needed",
+      Range{0, 100000});
     v("keyframe_close_untracked_max", keyframe_close_untracked_max,
-      "untracked close points above which (with few tracked) a keyframe is needed");
+      "untracked close points above which (with few tracked) a keyframe is needed",
+      Range{0, 100000});
     v("new_points_min", new_points_min,
-      "map points created from depth per keyframe before stopping at far points");
+      "map points created from depth per keyframe before stopping at far points", Range{0, 100000});
     v("rolling_shutter_readout_ms", rolling_shutter_readout_ms,
       "colour camera's rolling-shutter readout time (ms) for keypoint re-timing; -1 = the "
-      "camera's own (camera.yaml / built-in calibration), 0 = treat as global shutter");
+      "camera's own (camera.yaml / built-in calibration), 0 = treat as global shutter",
+      Range{-1, 1000});
   }
 };
 

@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 TEST(RunCli, MissingSequenceIsBadInput) {
   const fs::path out = test::scratchDir("run_missing");
   std::string log;
-  EXPECT_EQ(test::runCli("run /nonexistent/rgbd_dataset_freiburg1_none --out " + out.string(), &log), 2);
+  EXPECT_EQ(
+      test::runCli("run /nonexistent/rgbd_dataset_freiburg1_none --out " + out.string(), &log), 2);
   EXPECT_NE(log.find("nonexistent"), std::string::npos) << log;
 }
 
@@ -33,7 +34,10 @@ TEST(RunCli, UnknownConfigKeyIsBadInput) {
   const fs::path dir = test::scratchDir("run_bad_config");
   std::ofstream(dir / "bad.yaml") << "tracking:\n  no_such_key: 3\n";
   std::string log;
-  EXPECT_EQ(test::runCli("run . --out " + (dir / "out").string() + " --config " + (dir / "bad.yaml").string(), &log), 2);
+  EXPECT_EQ(test::runCli("run . --out " + (dir / "out").string() + " --config " +
+                             (dir / "bad.yaml").string(),
+                         &log),
+            2);
   EXPECT_NE(log.find("no_such_key"), std::string::npos) << log;
 }
 

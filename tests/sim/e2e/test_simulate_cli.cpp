@@ -73,7 +73,7 @@ TEST(SimulateCli, WritesATumSequenceWithGroundTruth) {
   EXPECT_DOUBLE_EQ(objects[1]["t"].get<double>(), 0.033333);
   const auto& o = objects[39]["objects"][0];
   for (const char* key : {"id", "class", "dynamic", "position_world", "position_camera", "distance",
-                          "bearing_deg", "clock", "velocity_world", "speed", "points"})
+                          "bearing_deg", "clock", "velocity_world", "speed", "points", "in_view"})
     EXPECT_TRUE(o.contains(key)) << key;
 
   // Images: 8-bit colour, 16-bit depth and masks, same size; mask ids are the listed instances,
