@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   dynanav::cli::registerRun(app, chosen);
   dynanav::cli::registerEval(app, chosen);
   dynanav::cli::registerEvalMasks(app, chosen);
+  dynanav::cli::registerEvalObjects(app, chosen);
   dynanav::cli::registerSimulate(app, chosen);
   dynanav::cli::registerSegment(app, chosen);
   dynanav::cli::registerVocabulary(app, chosen);

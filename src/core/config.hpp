@@ -15,6 +15,7 @@ struct Config {
   LoopConfig loop;
   PerceptionConfig perception;
   DynamicsConfig dynamics;
+  ObjectTrackingConfig objects;
   RunConfig run;
 
   template <class V>
@@ -26,6 +27,7 @@ struct Config {
     v("loop", loop);
     v("perception", perception);
     v("dynamics", dynamics);
+    v("objects", objects);
     v("run", run);
   }
 

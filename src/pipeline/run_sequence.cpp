@@ -12,6 +12,7 @@
 #include "core/interrupt.hpp"
 #include "io/json_io.hpp"
 #include "pipeline/frame_source.hpp"
+#include "pipeline/objects_sink.hpp"
 #include "pipeline/realtime_runner.hpp"
 #include "pipeline/run_outputs.hpp"
 #include "pipeline/system.hpp"
@@ -60,8 +61,9 @@ RunSummary runSequence(const RunOptions& options) {
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
+  ObjectsSink objects(options.out_dir);
   ProgressSink progress(source.expected());
-  std::vector<FrameSink*> sinks = {&trajectory, &stats};
+  std::vector<FrameSink*> sinks = {&trajectory, &stats, &objects};
   if (options.progress) sinks.push_back(&progress);
 
   RunSummary summary;

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "dynamics/keypoint_dynamics.hpp"
+#include "dynamics/object_tracker.hpp"
 #include "dynamics/prior_verifier.hpp"
 #include "perception/async_segmenter.hpp"
 #include "slam/frame.hpp"
@@ -16,7 +17,7 @@ System::System(const Config& config, const PinholeCamera& camera,
     : config_(config),
       camera_(camera),
       dynamic_(config.run.dynamic),
-      prep_({.half = config.run.dynamic}) {
+      prep_({.half = config.run.dynamic, .flow = config.run.dynamic && config.objects.enabled}) {
   if (dynamic_) {
     SegmenterRequest request;
     request.name = config.run.segmenter;
@@ -30,6 +31,8 @@ System::System(const Config& config, const PinholeCamera& camera,
           std::make_unique<AsyncSegmenter>(std::move(segmenter_), config.perception, &timers_);
     segmenter_name_ = segmenter_->name();
     verifier_ = std::make_unique<PriorVerifier>(config.dynamics);
+    if (config.objects.enabled)
+      tracker_ = std::make_unique<ObjectTracker>(config.objects, config.dynamics.sample_step_px);
   }
   slam_ = std::make_unique<SlamSystem>(config, camera, &timers_);
 }
@@ -57,7 +60,8 @@ FrameResult System::process(const RgbdFrame& input) {
     outcome = slam_->trackLocalMap(frame, std::move(initial));  // 6. local map, static points
   }
   verifyPriors(prep, input, frame, outcome, result);  // 7. scene flow: moving or not
-  // 8. object tracking and 9. feedback fill result.objects and result.events (issues 13, 14).
+  trackObjects(prep, input, frame, outcome, result);  // 8. object ids, motion, speed
+  // 9. feedback fills result.events (issue 14).
   slam_->finishFrame(frame, outcome);  // 10. local mapping, anchors
   fillResult(frame, outcome, result);
   result.index = input.index;
@@ -139,6 +143,16 @@ void System::verifyPriors(const PreparedFrame& prep, const RgbdFrame& input, con
     v.verified_static =
         std::binary_search(record.static_ids.begin(), record.static_ids.end(), instance.id);
   }
+}
+
+void System::trackObjects(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
+                          const TrackOutcome& outcome, FrameResult& result) {
+  if (!tracker_) return;
+  ScopedTimer timer(timers_, "objects");
+  const SE3 T_world_camera = frame.T_camera_world.inverse();
+  result.objects = tracker_->track({input.index, input.stamp_s, result.instances, *result.dynamics,
+                                    prep.flow_half, input.depth_m, T_world_camera,
+                                    outcome.state == TrackingState::kOk, camera_});
 }
 
 void System::fillResult(const Frame& frame, const TrackOutcome& outcome,

@@ -22,6 +22,7 @@ namespace dynanav {
 
 class SlamSystem;
 class PriorVerifier;
+class ObjectTracker;
 struct Frame;
 struct LoopEvent;
 struct TrackOutcome;
@@ -53,6 +54,8 @@ class System {
   void rejectMovers(Frame& frame, FrameDynamics& record);
   void verifyPriors(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
                     const TrackOutcome& outcome, FrameResult& result);
+  void trackObjects(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
+                    const TrackOutcome& outcome, FrameResult& result);
   void fillResult(const Frame& frame, const TrackOutcome& outcome, FrameResult& result) const;
 
   Config config_;
@@ -64,6 +67,7 @@ class System {
   std::string segmenter_name_ = "off";
   std::unique_ptr<SlamSystem> slam_;
   std::unique_ptr<PriorVerifier> verifier_;
+  std::unique_ptr<ObjectTracker> tracker_;  // null with dynamics or object tracking off
   std::vector<uint16_t>
       depth_voted_;  // this frame's non-prior instances the depth test found moving
 };

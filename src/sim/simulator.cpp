@@ -4,17 +4,9 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "io/objects_jsonl.hpp"
 
 namespace dynanav::sim {
-
-namespace {
-double round6(double v) {
-  return std::round(v * 1e6) / 1e6 + 0.0;
-}  // + 0.0: no "-0.0" in files
-nlohmann::json vec(const Vec3& v) {
-  return {round6(v.x()), round6(v.y()), round6(v.z())};
-}
-}  // namespace
 
 Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (!(options.fps > 0.0 && options.fps <= 1000.0))
@@ -103,29 +95,20 @@ SimFrame Simulator::render(int i) {
   }
   const SE3 T_camera_world = f.T_world_camera.inverse();
   if (options_.readout_s > 0.0) drawItems(i, items_);  // the bands left the last band's scene
-  nlohmann::json objects = nlohmann::json::array();
+  std::vector<TrackedObject> objects;
   for (const Mover& m : scene_->movers) {
-    const Vec3 p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
-    const Vec3 v_world = T_world_room_.linear() * scene_->moverVelocity(m, f.stamp_s);
-    const Vec3 p_camera = T_camera_world * p_world;
-    const double bearing_deg = std::atan2(p_camera.x(), p_camera.z()) * 180.0 / M_PI;
-    int clock = int(std::lround(bearing_deg / 30.0));
-    clock = ((clock % 12) + 12) % 12;
-    const double speed = v_world.norm();
-    objects.push_back({{"id", m.id},
-                       {"class", m.cls},
-                       {"dynamic", speed > 1e-6},
-                       {"position_world", vec(p_world)},
-                       {"position_camera", vec(p_camera)},
-                       {"distance", round6(p_camera.norm())},
-                       {"bearing_deg", round6(bearing_deg)},
-                       {"clock", clock == 0 ? 12 : clock},
-                       {"velocity_world", vec(v_world)},
-                       {"speed", round6(speed)},
-                       {"points", pixels[m.id]},
-                       {"in_view", round6(inViewShare(m.id, pixels[m.id], T_camera_world))}});
+    TrackedObject& o = objects.emplace_back();
+    o.id = m.id;
+    o.class_name = m.cls;
+    o.p_world = T_world_room_ * scene_->moverCentre(m, f.stamp_s);
+    o.v_world_mps = T_world_room_.linear() * scene_->moverVelocity(m, f.stamp_s);
+    o.p_camera = T_camera_world * o.p_world;
+    fillViewGeometry(o);
+    o.dynamic = o.speed_mps > 1e-6;
+    o.points = pixels[m.id];
+    o.visible_share = inViewShare(m.id, pixels[m.id], T_camera_world);  // objects_gt in_view
   }
-  f.objects = {{"t", f.stamp_s}, {"objects", objects}};
+  f.objects = objectsFrameJson(f.stamp_s, objects);
   return f;
 }
 

@@ -42,7 +42,7 @@ struct SimFrame {
   cv::Mat depth_true_m;  ///< exact camera z of the visible surface (CV_32F, 0 = nothing)
   cv::Mat instance;      ///< CV_16U instance ids, 0 = background
   SE3 T_world_camera = SE3::Identity();
-  nlohmann::json objects;  ///< the objects_gt.jsonl record of this frame
+  nlohmann::json objects;  ///< the objects_gt.jsonl record of this frame (io/objects_jsonl)
 };
 
 class Simulator {

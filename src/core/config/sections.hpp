@@ -6,6 +6,7 @@
 #include "core/config/io.hpp"
 #include "core/config/loop.hpp"
 #include "core/config/mapping.hpp"
+#include "core/config/objects.hpp"
 #include "core/config/orb.hpp"
 #include "core/config/perception.hpp"
 #include "core/config/run.hpp"

@@ -1,0 +1,84 @@
+#pragma once
+// Config section `objects`: moving-object tracking (dynamics/object_tracker.hpp; see
+// core/config.hpp for how sections are loaded and echoed). The sampling step is the dynamics
+// section's sample_step_px (5 px), shared with scene flow.
+#include "core/config/range.hpp"
+
+namespace dynanav {
+
+struct ObjectTrackingConfig {
+  bool enabled = true;
+  int max_points = 400;
+  double replenish_share = 0.5;
+  int trunk_min_points = 20;
+  int max_missed_frames = 15;
+  double match_min_score = 0.3;
+  double depth_band_m = 0.5;
+  double centre_behind_surface_m = 0.15;
+  int min_motion_points = 12;
+  int ransac_iterations = 100;
+  double ransac_reprojection_px = 2.0;
+  double refine_huber_px = 1.0;
+  int refine_iterations = 10;
+  double accel_sigma_mps2 = 1.0;
+  double position_sigma_m = 0.05;
+  double velocity_sigma_mps = 0.3;
+  int static_after_frames = 3;
+  double static_speed_mps = 0.25;
+  double path_horizon_s = 3.0;
+  double path_step_s = 0.5;
+  template <class V>
+  void visit(V&& v) {
+    v("enabled", enabled, "track instances (ids, position, velocity); only with dynamics on");
+    v("max_points", max_points,
+      "most points kept per object (the 5 px grid is thinned to this; bounds the per-frame cost)",
+      Range{10, 100000});
+    v("replenish_share", replenish_share,
+      "an object's points are resampled from its mask when fewer than this share of them survive",
+      Range{0, 1});
+    v("trunk_min_points", trunk_min_points,
+      "people with shoulders and hips: sample the trunk between them if it gives this many points",
+      Range{0, 100000});
+    v("max_missed_frames", max_missed_frames,
+      "a track the segmenter misses is carried by its flow points for at most this many frames",
+      Range{0, 1000});
+    v("match_min_score", match_min_score,
+      "track-instance match: least (flow-point vote share + mask overlap share) to keep an id",
+      Range{0, 2});
+    v("depth_band_m", depth_band_m,
+      "points farther than this (m) from the object's median depth are dropped",
+      Range{0, 100, Range::kOpenLow});
+    v("centre_behind_surface_m", centre_behind_surface_m,
+      "a person's centre lies this far (m) behind the visible surface, along the viewing ray "
+      "(other "
+      "objects: half their visible width)",
+      Range{0, 2});
+    v("min_motion_points", min_motion_points,
+      "fewest 3D-2D correspondences for a rigid-motion estimate", Range{6, 100000});
+    v("ransac_iterations", ransac_iterations, "EPnP-RANSAC iterations per object and frame",
+      Range{1, 100000});
+    v("ransac_reprojection_px", ransac_reprojection_px, "EPnP-RANSAC inlier threshold (px)",
+      Range{0, 100, Range::kOpenLow});
+    v("refine_huber_px", refine_huber_px, "Ceres refinement: Huber loss scale (px)",
+      Range{0, 100, Range::kOpenLow});
+    v("refine_iterations", refine_iterations,
+      "Ceres refinement: most Levenberg-Marquardt iterations", Range{0, 1000});
+    v("accel_sigma_mps2", accel_sigma_mps2, "Kalman filter: unmodelled acceleration (m/s^2)",
+      Range{0, 100, Range::kOpenLow});
+    v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)",
+      Range{0, 10, Range::kOpenLow});
+    v("velocity_sigma_mps", velocity_sigma_mps,
+      "Kalman filter: noise of the one-frame centroid velocity (m/s)",
+      Range{0, 100, Range::kOpenLow});
+    v("static_after_frames", static_after_frames,
+      "an object not found moving for this many frames in a row and measured slower than "
+      "static_speed_mps (or not found moving for 3x as many frames) is static: velocity zero",
+      Range{0, 1000});
+    v("static_speed_mps", static_speed_mps, "see static_after_frames (m/s)", Range{0, 100});
+    v("path_horizon_s", path_horizon_s, "predicted path: how far ahead (s)", Range{0, 60});
+    v("path_step_s", path_step_s, "predicted path: spacing of its points (s)",
+      Range{0, 60, Range::kOpenLow});
+  }
+};
+
+}  // namespace dynanav

@@ -1,0 +1,83 @@
+#include "dynamics/kalman_cv.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace dynanav {
+
+KalmanCv::KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise) : noise_(noise) {
+  x_.head<3>() = p_world;
+  P_.setZero();
+  P_.topLeftCorner<3, 3>() = Mat3::Identity() * noise.position_sigma_m * noise.position_sigma_m;
+  P_.bottomRightCorner<3, 3>() =
+      Mat3::Identity() * noise.initial_velocity_sigma_mps * noise.initial_velocity_sigma_mps;
+}
+
+KalmanCv::Mat6 KalmanCv::transition(double dt_s) const {
+  Mat6 F = Mat6::Identity();
+  F.topRightCorner<3, 3>() = Mat3::Identity() * dt_s;
+  return F;
+}
+
+KalmanCv::Mat6 KalmanCv::processNoise(double dt_s) const {
+  const double q = noise_.accel_sigma_mps2 * noise_.accel_sigma_mps2;
+  const double dt2 = dt_s * dt_s, dt3 = dt2 * dt_s;
+  Mat6 Q = Mat6::Zero();
+  Q.topLeftCorner<3, 3>() = Mat3::Identity() * q * dt3 / 3.0;
+  Q.topRightCorner<3, 3>() = Mat3::Identity() * q * dt2 / 2.0;
+  Q.bottomLeftCorner<3, 3>() = Mat3::Identity() * q * dt2 / 2.0;
+  Q.bottomRightCorner<3, 3>() = Mat3::Identity() * q * dt_s;
+  return Q;
+}
+
+void KalmanCv::predict(double dt_s) {
+  if (!(dt_s > 0.0)) return;
+  const Mat6 F = transition(dt_s);
+  x_ = F * x_;
+  P_ = F * P_ * F.transpose() + processNoise(dt_s);
+}
+
+void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps) {
+  const int m = v_world_mps ? 6 : 3;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 6);
+  H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
+  Eigen::VectorXd z(m);
+  z.head<3>() = p_world;
+  Eigen::VectorXd r_diag(m);
+  r_diag.head<3>().setConstant(noise_.position_sigma_m * noise_.position_sigma_m);
+  if (v_world_mps) {
+    z.tail<3>() = *v_world_mps;
+    r_diag.tail<3>().setConstant(noise_.velocity_sigma_mps * noise_.velocity_sigma_mps);
+  }
+  const Eigen::VectorXd y = z - H * x_;
+  const Eigen::MatrixXd S = H * P_ * H.transpose() + Eigen::MatrixXd(r_diag.asDiagonal());
+  const Eigen::MatrixXd K = P_ * H.transpose() * S.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+  x_ += K * y;
+  // Joseph form: stays symmetric positive semi-definite.
+  const Mat6 I_KH = Mat6::Identity() - K * H;
+  P_ = I_KH * P_ * I_KH.transpose() + K * Eigen::MatrixXd(r_diag.asDiagonal()) * K.transpose();
+}
+
+void KalmanCv::holdStill() {
+  x_.tail<3>().setZero();
+  P_.topRightCorner<3, 3>().setZero();
+  P_.bottomLeftCorner<3, 3>().setZero();
+  P_.bottomRightCorner<3, 3>() = Mat3::Identity() * 1e-4;
+}
+
+std::vector<PathPoint> KalmanCv::predictPath(double horizon_s, double step_s) const {
+  std::vector<PathPoint> path;
+  if (!(step_s > 0.0)) return path;
+  for (double ahead = step_s; ahead <= horizon_s + 1e-9; ahead += step_s) {
+    const Mat6 F = transition(ahead);
+    const Mat6 P = F * P_ * F.transpose() + processNoise(ahead);
+    const Mat3 Pp = P.topLeftCorner<3, 3>();
+    const double lambda =
+        Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (Pp + Pp.transpose())).eigenvalues().maxCoeff();
+    path.push_back({ahead, (F * x_).head<3>(), std::sqrt(std::max(0.0, lambda))});
+  }
+  return path;
+}
+
+}  // namespace dynanav

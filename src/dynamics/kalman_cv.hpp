@@ -1,0 +1,52 @@
+#pragma once
+// Constant-velocity Kalman filter of an object's centre in the world frame: state x = [p, v]
+// (m, m/s), white-noise acceleration of spectral density accel_sigma^2 (the discretised
+// process noise of Bar-Shalom, "Estimation with Applications to Tracking", §6.3.2). Measurements
+// are the centre (from the object's points) and, when the rigid motion was estimated, the
+// centroid velocity; both enter in one update with their own noise.
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "core/se3.hpp"
+#include "core/tracked_object.hpp"
+
+namespace dynanav {
+
+struct KalmanCvNoise {
+  double accel_sigma_mps2 = 1.0;    ///< process noise: unmodelled acceleration
+  double position_sigma_m = 0.05;   ///< centre measurement
+  double velocity_sigma_mps = 0.3;  ///< one-frame centroid velocity measurement
+  double initial_velocity_sigma_mps = 1.0;
+};
+
+class KalmanCv {
+ public:
+  using Vec6 = Eigen::Matrix<double, 6, 1>;
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+  KalmanCv() = default;
+  KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise);
+
+  /// Moves the state dt_s seconds ahead.
+  void predict(double dt_s);
+  /// Position measurement, optionally with a velocity measurement.
+  void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps);
+  /// Sets the velocity to zero with a small variance (a static object).
+  void holdStill();
+
+  [[nodiscard]] Vec3 position() const { return x_.head<3>(); }
+  [[nodiscard]] Vec3 velocity() const { return x_.tail<3>(); }
+  [[nodiscard]] const Mat6& covariance() const { return P_; }
+  /// Predicted centre every step_s up to horizon_s, with its spread.
+  [[nodiscard]] std::vector<PathPoint> predictPath(double horizon_s, double step_s) const;
+
+ private:
+  [[nodiscard]] Mat6 transition(double dt_s) const;
+  [[nodiscard]] Mat6 processNoise(double dt_s) const;
+  KalmanCvNoise noise_;
+  Vec6 x_ = Vec6::Zero();
+  Mat6 P_ = Mat6::Identity();
+};
+
+}  // namespace dynanav

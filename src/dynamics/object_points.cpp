@@ -1,0 +1,119 @@
+#include "dynamics/object_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace dynanav {
+namespace {
+
+double median(std::vector<double> values) {
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + long(mid), values.end());
+  return values[mid];
+}
+
+/// The box spanned by shoulders and hips, when all four were found.
+std::optional<cv::Rect> trunkBox(const Instance& instance) {
+  if (!instance.keypoints) return std::nullopt;
+  constexpr float kMinScore = 0.3f;
+  std::vector<cv::Point2f> corners;
+  for (const BodyPart part : {BodyPart::kLeftShoulder, BodyPart::kRightShoulder, BodyPart::kLeftHip,
+                              BodyPart::kRightHip}) {
+    const Keypoint& k = instance.keypoints->at(part);
+    if (k.score < kMinScore) return std::nullopt;
+    corners.push_back(k.pixel);
+  }
+  return cv::boundingRect(corners);
+}
+
+std::vector<cv::Point2f> gridIn(const cv::Mat& labels, uint16_t id, cv::Rect area, int step) {
+  std::vector<cv::Point2f> out;
+  area &= cv::Rect(0, 0, labels.cols, labels.rows);
+  // The grid is anchored at the image origin, so a mask sampled twice gives the same pixels.
+  const int x0 = (area.x + step - 1) / step * step;
+  const int y0 = (area.y + step - 1) / step * step;
+  for (int y = y0; y < area.y + area.height; y += step) {
+    const uint16_t* row = labels.ptr<uint16_t>(y);
+    for (int x = x0; x < area.x + area.width; x += step)
+      if (row[x] == id) out.emplace_back(float(x), float(y));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                            const SampleOptions& options) {
+  const int step = std::max(1, options.step_px);
+  std::vector<cv::Point2f> points;
+  if (const auto trunk = trunkBox(instance)) {
+    points = gridIn(labels, instance.id, *trunk, step);
+  } else if (instance.class_name == "person" && instance.box.y > 1 &&
+             instance.box.y + instance.box.height < labels.rows - 1) {
+    // No keypoints but the whole person in view: the trunk is about the band from 20 % to 50 %
+    // of the height below the top of the head (shoulders to hips of an adult).
+    const cv::Rect& b = instance.box;
+    points = gridIn(labels, instance.id,
+                    cv::Rect(b.x, b.y + b.height / 5, b.width, b.height * 3 / 10), step);
+  }
+  if (int(points.size()) < options.trunk_min_points)
+    points = gridIn(labels, instance.id, instance.box, step);
+  if (options.max_points > 0 && int(points.size()) > options.max_points) {
+    std::vector<cv::Point2f> thinned;
+    thinned.reserve(size_t(options.max_points));
+    const double stride = double(points.size()) / options.max_points;
+    for (int k = 0; k < options.max_points; ++k) thinned.push_back(points[size_t(k * stride)]);
+    points = std::move(thinned);
+  }
+  return points;
+}
+
+bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel) {
+  if (!flow_half.empty()) {
+    // Half-size pixel centres: (u + 0.5) / 2 - 0.5.
+    const int xh = int(std::lround((pixel.x + 0.5f) * 0.5f - 0.5f));
+    const int yh = int(std::lround((pixel.y + 0.5f) * 0.5f - 0.5f));
+    if (xh < 0 || yh < 0 || xh >= flow_half.cols || yh >= flow_half.rows) return false;
+    const cv::Point2f d = flow_half.at<cv::Point2f>(yh, xh);
+    pixel += 2.0f * d;
+  }
+  return pixel.x >= 0.f && pixel.y >= 0.f && pixel.x <= float(image_size.width - 1) &&
+         pixel.y <= float(image_size.height - 1);
+}
+
+float depthAt(const cv::Mat& depth_m, const cv::Point2f& pixel) {
+  const int x = int(std::lround(pixel.x)), y = int(std::lround(pixel.y));
+  if (x < 0 || y < 0 || x >= depth_m.cols || y >= depth_m.rows) return 0.f;
+  const float z = depth_m.at<float>(y, x);
+  return std::isfinite(z) && z > 0.f ? z : 0.f;
+}
+
+std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth_band_m,
+                                 double behind_m) {
+  if (p_camera.empty()) return std::nullopt;
+  std::vector<double> z;
+  z.reserve(p_camera.size());
+  for (const Vec3& p : p_camera) z.push_back(p.z());
+  const double z_median = median(z);
+  std::vector<double> xs, ys, zs;
+  for (const Vec3& p : p_camera) {
+    if (std::abs(p.z() - z_median) > depth_band_m) continue;
+    xs.push_back(p.x());
+    ys.push_back(p.y());
+    zs.push_back(p.z());
+  }
+  if (xs.empty()) return std::nullopt;
+  const Vec3 surface(median(xs), median(ys), median(zs));
+  return surface + behind_m * surface.normalized();
+}
+
+double objectWidth(const std::vector<Vec3>& p_camera) {
+  if (p_camera.size() < 2) return 0.0;
+  std::vector<double> x;
+  for (const Vec3& p : p_camera) x.push_back(p.x());
+  std::sort(x.begin(), x.end());
+  return x[x.size() * 9 / 10] - x[x.size() / 10];
+}
+
+}  // namespace dynanav

@@ -1,0 +1,44 @@
+#pragma once
+// The points an object is tracked by: a regular grid inside its mask (people: the trunk between
+// shoulders and hips when the keypoint model ran, the part of a walker that moves rigidly),
+// carried to the next frame by the shared dense flow (PreparedFrame::flow_half, half-size
+// pixels) and lifted to 3D with that frame's depth.
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/se3.hpp"
+#include "perception/instances.hpp"
+
+namespace dynanav {
+
+struct SampleOptions {
+  int step_px = 5;
+  int max_points = 400;       ///< the grid is thinned evenly to at most this many
+  int trunk_min_points = 20;  ///< fewer inside the trunk: the whole mask
+};
+
+/// Grid pixels (every step_px) with label `id`; for people, those of the trunk when that gives
+/// trunk_min_points: inside the box spanned by both shoulders and both hips when keypoints were
+/// found, else the band 20-50 % down a box that is wholly in view.
+std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                            const SampleOptions& options);
+
+/// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
+/// false when it leaves the image.
+bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel);
+
+/// Depth (m) at the pixel nearest `pixel`; 0 when invalid or outside.
+float depthAt(const cv::Mat& depth_m, const cv::Point2f& pixel);
+
+/// Robust centre of an object seen as `p_camera` points: the per-axis median of the points
+/// within depth_band_m of their median depth, pushed behind_m further along its viewing ray
+/// (visible points lie on the surface facing the camera). Empty when no point is given.
+std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth_band_m,
+                                 double behind_m);
+
+/// Horizontal extent (m) of the points: the 10th to 90th percentile of camera x.
+double objectWidth(const std::vector<Vec3>& p_camera);
+
+}  // namespace dynanav

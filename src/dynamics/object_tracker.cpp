@@ -1,0 +1,287 @@
+#include "dynamics/object_tracker.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "dynamics/object_motion.hpp"
+#include "dynamics/object_points.hpp"
+
+namespace dynanav {
+namespace {
+
+/// How far the centre lies behind the visible surface: a person's half thickness (config); for
+/// other objects half their visible width (a box or chair is about as deep as it is wide).
+double behindSurface(const std::string& class_name, const std::vector<Vec3>& p_camera,
+                     const ObjectTrackingConfig& config) {
+  return class_name == "person" ? config.centre_behind_surface_m : 0.5 * objectWidth(p_camera);
+}
+
+bool contains(const std::vector<uint16_t>& sorted_ids, uint16_t id) {
+  return std::binary_search(sorted_ids.begin(), sorted_ids.end(), id);
+}
+
+uint16_t labelAt(const cv::Mat& labels, const Eigen::Vector2d& pixel) {
+  const int x = int(std::lround(pixel.x())), y = int(std::lround(pixel.y()));
+  if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return 0;
+  return labels.at<uint16_t>(y, x);
+}
+
+}  // namespace
+
+ObjectTracker::ObjectTracker(const ObjectTrackingConfig& config, int sample_step_px)
+    : config_(config), sample_step_px_(sample_step_px) {}
+
+std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input) {
+  const cv::Size size = input.depth_m.size();
+  // 1. Every track's points into this frame along the shared flow.
+  std::vector<Carried> carried(tracks_.size());
+  for (size_t k = 0; k < tracks_.size(); ++k) {
+    const Track& t = tracks_[k];
+    for (size_t i = 0; i < t.pixels.size(); ++i) {
+      cv::Point2f px = t.pixels[i];
+      if (!carryByFlow(input.flow_half, size, px)) continue;
+      carried[k].p_prev_world.push_back(t.p_world[i]);
+      carried[k].pixels.emplace_back(px.x, px.y);
+    }
+  }
+  // 2. Which instance each track is now; 3. motion, centre and filter per track.
+  const std::vector<int> match = associate(input, carried);
+  const auto& items = input.instances.items;
+  std::vector<uint8_t> claimed(items.size(), 0);
+  for (size_t k = 0; k < tracks_.size(); ++k) {
+    const Instance* instance = match[k] >= 0 ? &items[size_t(match[k])] : nullptr;
+    if (instance) claimed[size_t(match[k])] = 1;
+    update(tracks_[k], carried[k], instance, input);
+  }
+  // 4. Tracks unseen for too long, or whose points all left, end.
+  std::erase_if(tracks_, [&](const Track& t) {
+    return t.missed > config_.max_missed_frames || (t.missed > 0 && t.pixels.size() < 4);
+  });
+  // 5. Instances no track claimed start new tracks (fresh ids, never reused).
+  for (size_t m = 0; m < items.size(); ++m)
+    if (!claimed[m])
+      if (auto t = start(items[m], input)) tracks_.push_back(std::move(*t));
+  previous_labels_ = input.instances.labels.clone();
+  std::vector<TrackedObject> out;
+  out.reserve(tracks_.size());
+  for (const Track& t : tracks_) out.push_back(report(t, input));
+  return out;
+}
+
+std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
+                                          const std::vector<Carried>& carried) {
+  const auto& items = input.instances.items;
+  const cv::Mat& labels = input.instances.labels;
+  std::vector<int> match(tracks_.size(), -1);
+  if (items.empty() || tracks_.empty()) return match;
+  // Label -> index maps for this frame's instances and the tracks' last instances.
+  uint16_t max_label = 0;
+  for (const Instance& it : items) max_label = std::max(max_label, it.id);
+  for (const Track& t : tracks_) max_label = std::max(max_label, t.instance);
+  std::vector<int> item_of(size_t(max_label) + 1, -1), track_of(size_t(max_label) + 1, -1);
+  for (size_t m = 0; m < items.size(); ++m) item_of[items[m].id] = int(m);
+  for (size_t k = 0; k < tracks_.size(); ++k)
+    if (tracks_[k].instance) track_of[tracks_[k].instance] = int(k);
+  const size_t n_items = items.size();
+  std::vector<double> overlap(tracks_.size() * n_items, 0.0);
+  std::vector<double> area_prev(tracks_.size(), 0.0), area_cur(n_items, 0.0);
+  const bool have_prev = previous_labels_.size() == labels.size();
+  // Mask overlap with the track's last mask (every second pixel and row: shares, not counts).
+  for (int y = 0; y < labels.rows; y += 2) {
+    const uint16_t* cur = labels.ptr<uint16_t>(y);
+    const uint16_t* prev = have_prev ? previous_labels_.ptr<uint16_t>(y) : nullptr;
+    for (int x = 0; x < labels.cols; x += 2) {
+      const int m = cur[x] <= max_label ? item_of[cur[x]] : -1;
+      const int k = prev && prev[x] <= max_label ? track_of[prev[x]] : -1;
+      if (m >= 0) area_cur[size_t(m)] += 1.0;
+      if (k >= 0) area_prev[size_t(k)] += 1.0;
+      if (m >= 0 && k >= 0) overlap[size_t(k) * n_items + size_t(m)] += 1.0;
+    }
+  }
+  std::vector<std::tuple<double, size_t, size_t>> candidates;
+  for (size_t k = 0; k < tracks_.size(); ++k) {
+    std::vector<double> votes(n_items, 0.0);
+    for (const auto& px : carried[k].pixels) {
+      const uint16_t label = labelAt(labels, px);
+      if (label && label <= max_label && item_of[label] >= 0) votes[size_t(item_of[label])] += 1.0;
+    }
+    const double n = std::max<size_t>(1, carried[k].pixels.size());
+    for (size_t m = 0; m < n_items; ++m) {
+      if (items[m].class_name != tracks_[k].class_name) continue;
+      const double smaller = std::min(area_prev[k], area_cur[m]);
+      const double score =
+          votes[m] / n + (smaller > 0.0 ? overlap[k * n_items + m] / smaller : 0.0);
+      if (score >= config_.match_min_score) candidates.emplace_back(score, k, m);
+    }
+  }
+  // Greedy, best score first (ties by track, then instance: deterministic).
+  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+    if (std::get<0>(a) != std::get<0>(b)) return std::get<0>(a) > std::get<0>(b);
+    return std::tie(std::get<1>(a), std::get<2>(a)) < std::tie(std::get<1>(b), std::get<2>(b));
+  });
+  std::vector<uint8_t> item_taken(n_items, 0);
+  for (const auto& [score, k, m] : candidates) {
+    if (match[k] >= 0 || item_taken[m]) continue;
+    match[k] = int(m);
+    item_taken[m] = 1;
+  }
+  return match;
+}
+
+void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
+                         const ObjectTrackerInput& input) const {
+  track.pixels.clear();
+  track.p_world.clear();
+  std::vector<float> z(pixels.size());
+  std::vector<float> valid;
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    z[i] = depthAt(input.depth_m, pixels[i]);
+    if (z[i] > 0.f) valid.push_back(z[i]);
+  }
+  if (valid.empty()) return;
+  // Pixels of a mask that spills over its outline see the background far behind: only points
+  // within depth_band_m of the object's median depth are the object's.
+  std::nth_element(valid.begin(), valid.begin() + long(valid.size() / 2), valid.end());
+  const float z_median = valid[valid.size() / 2];
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    if (z[i] <= 0.f || std::abs(z[i] - z_median) > float(config_.depth_band_m)) continue;
+    track.pixels.push_back(pixels[i]);
+    track.p_world.push_back(input.T_world_camera *
+                            input.camera.backproject(pixels[i].x, pixels[i].y, z[i]));
+  }
+}
+
+void ObjectTracker::update(Track& track, const Carried& carried, const Instance* instance,
+                           const ObjectTrackerInput& input) {
+  const double dt = input.stamp_s - track.last_stamp_s;
+  track.last_stamp_s = input.stamp_s;
+  track.missed = instance ? 0 : track.missed + 1;
+  track.instance = instance ? instance->id : 0;
+  track.inliers = 0;
+  if (dt > 0.0) track.filter.predict(dt);
+  if (!input.tracked) {  // no camera pose: no world points; the filter coasts
+    track.pixels.clear();
+    for (const auto& px : carried.pixels) track.pixels.emplace_back(float(px.x()), float(px.y()));
+    track.p_world = carried.p_prev_world;
+    return;
+  }
+  // Keep the carried points that are still on the object: on its mask when the segmenter saw
+  // it, and at the depth the last motion predicts (background behind a mask edge is not).
+  const SE3 T_camera_world = input.T_world_camera.inverse();
+  Carried kept;
+  std::vector<cv::Point2f> kept_pixels;
+  std::vector<double> kept_depth_m;
+  for (size_t i = 0; i < carried.pixels.size(); ++i) {
+    const Eigen::Vector2d& px = carried.pixels[i];
+    if (instance && labelAt(input.instances.labels, px) != instance->id) continue;
+    const float z = depthAt(input.depth_m, cv::Point2f(float(px.x()), float(px.y())));
+    const double z_predicted = (T_camera_world * (track.motion * carried.p_prev_world[i])).z();
+    if (z <= 0.f || std::abs(z - z_predicted) > config_.depth_band_m) continue;
+    kept.p_prev_world.push_back(carried.p_prev_world[i]);
+    kept.pixels.push_back(px);
+    kept_pixels.emplace_back(float(px.x()), float(px.y()));
+    kept_depth_m.push_back(z);
+  }
+  std::optional<Vec3> v_measured;
+  if (dt > 0.0) {
+    ObjectMotionOptions options;
+    options.ransac_iterations = config_.ransac_iterations;
+    options.reprojection_px = config_.ransac_reprojection_px;
+    options.huber_px = config_.refine_huber_px;
+    options.refine_iterations = config_.refine_iterations;
+    options.min_points = config_.min_motion_points;
+    options.seed = uint64_t(input.frame_index) * 7919u + track.id;  // same run, same answer
+    const ObjectMotion motion =
+        estimateObjectMotion(kept.p_prev_world, kept.pixels, T_camera_world, input.camera,
+                             track.motion, options, kept_depth_m);
+    if (motion.ok) {
+      Vec3 c = Vec3::Zero();
+      for (size_t i = 0; i < motion.inlier.size(); ++i)
+        if (motion.inlier[i]) c += kept.p_prev_world[i];
+      c /= double(motion.inliers);
+      v_measured = centroidDisplacement(motion.H_world, c) / dt;  // v = (t - (I - R) c) / dt
+      track.motion = motion.H_world;
+      track.inliers = motion.inliers;
+    } else {
+      track.motion = SE3::Identity();
+    }
+  }
+  lift(track, kept_pixels, input);
+  const bool thin = double(track.pixels.size()) < config_.replenish_share * track.sampled ||
+                    int(track.pixels.size()) < config_.min_motion_points;
+  if (instance && thin) {
+    lift(track,
+         sampleObjectPixels(input.instances.labels, *instance,
+                            {sample_step_px_, config_.max_points, config_.trunk_min_points}),
+         input);
+    track.sampled = int(track.pixels.size());
+  }
+  std::vector<Vec3> p_camera;
+  p_camera.reserve(track.p_world.size());
+  for (const Vec3& p : track.p_world) p_camera.push_back(T_camera_world * p);
+  if (const auto centre = objectCentre(p_camera, config_.depth_band_m,
+                                       behindSurface(track.class_name, p_camera, config_)))
+    track.filter.update(input.T_world_camera * *centre, v_measured);
+  // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
+  if (instance) {
+    const bool moving = contains(input.dynamics.moving_ids, instance->id);
+    track.still = moving ? 0 : track.still + 1;
+  }
+  // Not found moving for a while and measured slow, or not found moving for three times as
+  // long: static (a verdict that flickers off for a few frames of a walker does not stop it;
+  // a chair's noisy speed does not keep it moving).
+  const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
+  const bool slow = track.filter.velocity().norm() < config_.static_speed_mps;
+  track.stationary = verified_static || (track.still >= config_.static_after_frames &&
+                                         (slow || track.still >= 3 * config_.static_after_frames));
+  if (track.stationary) track.filter.holdStill();
+}
+
+std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
+                                                         const ObjectTrackerInput& input) {
+  if (!input.tracked) return std::nullopt;
+  Track t;
+  t.class_name = instance.class_name;
+  t.instance = instance.id;
+  t.last_stamp_s = input.stamp_s;
+  lift(t,
+       sampleObjectPixels(input.instances.labels, instance,
+                          {sample_step_px_, config_.max_points, config_.trunk_min_points}),
+       input);
+  t.sampled = int(t.pixels.size());
+  const SE3 T_camera_world = input.T_world_camera.inverse();
+  std::vector<Vec3> p_camera;
+  for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
+  const auto centre =
+      objectCentre(p_camera, config_.depth_band_m, behindSurface(t.class_name, p_camera, config_));
+  if (!centre) return std::nullopt;
+  t.filter = KalmanCv(
+      input.T_world_camera * *centre,
+      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0});
+  const bool moving = contains(input.dynamics.moving_ids, instance.id);
+  t.still = moving ? 0 : 1;
+  if (contains(input.dynamics.static_ids, instance.id)) t.still = config_.static_after_frames;
+  t.stationary = t.still >= config_.static_after_frames;
+  t.id = next_id_++;
+  return t;
+}
+
+TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& input) const {
+  TrackedObject o;
+  o.id = t.id;
+  o.class_name = t.class_name;
+  o.dynamic = !t.stationary;
+  o.p_world = t.filter.position();
+  o.v_world_mps = t.stationary ? Vec3::Zero() : t.filter.velocity();
+  o.p_camera = input.T_world_camera.inverse() * o.p_world;
+  fillViewGeometry(o);
+  o.points = int(t.pixels.size());
+  o.covariance = t.filter.covariance();
+  o.missed_frames = t.missed;
+  o.motion_inliers = t.inliers;
+  if (!t.stationary)
+    o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
+  return o;
+}
+
+}  // namespace dynanav

@@ -1,0 +1,80 @@
+#pragma once
+// Step 8 of the per-frame story (DESIGN.md §1): tracks every instance over the run with an id
+// that stays (mask overlap with the track's last mask plus the votes of its flow-carried points;
+// ids are never reused), estimates each object's rigid motion from its points
+// (object_motion.hpp), filters centre and velocity with a constant-velocity Kalman filter
+// (kalman_cv.hpp) and reports TrackedObjects with covariance and a predicted path. An object the
+// segmenter misses is carried by its points for up to max_missed_frames. Objects not found
+// moving (a seated person, a chair) get position, distance and bearing with zero velocity.
+// Values in, values out: the pipeline gives this frame's instances, the dynamics verdicts, the
+// shared flow, depth and camera pose.
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/config/objects.hpp"
+#include "core/se3.hpp"
+#include "core/tracked_object.hpp"
+#include "dynamics/frame_dynamics.hpp"
+#include "dynamics/kalman_cv.hpp"
+#include "perception/instances.hpp"
+
+namespace dynanav {
+
+struct ObjectTrackerInput {
+  int frame_index = 0;
+  double stamp_s = 0.0;
+  const Instances& instances;
+  const FrameDynamics& dynamics;  ///< moving_ids / static_ids of this frame's instances
+  const cv::Mat& flow_half;       ///< previous -> this frame, half-size pixels (may be empty)
+  const cv::Mat& depth_m;         ///< CV_32F
+  const SE3& T_world_camera;
+  bool tracked = false;  ///< camera pose valid: without it no motion is estimated
+  const PinholeCamera& camera;
+};
+
+class ObjectTracker {
+ public:
+  ObjectTracker(const ObjectTrackingConfig& config, int sample_step_px);
+  std::vector<TrackedObject> track(const ObjectTrackerInput& input);
+  [[nodiscard]] size_t liveTracks() const { return tracks_.size(); }
+
+ private:
+  struct Track {
+    uint64_t id = 0;
+    std::string class_name;
+    std::vector<cv::Point2f> pixels;  // in the last frame
+    std::vector<Vec3> p_world;        // lifted with the last frame's depth
+    int sampled = 0;                  // points at the last (re)sampling
+    uint16_t instance = 0;            // label in the last frame (0: carried)
+    KalmanCv filter;
+    SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
+    int missed = 0;
+    int still = 0;            // frames in a row not found moving
+    bool stationary = false;  // reported with zero velocity
+    int inliers = 0;
+    double last_stamp_s = 0.0;
+  };
+  struct Carried {  // one track's points carried into this frame
+    std::vector<Vec3> p_prev_world;
+    std::vector<Eigen::Vector2d> pixels;
+  };
+
+  std::vector<int> associate(const ObjectTrackerInput& input, const std::vector<Carried>& carried);
+  void update(Track& track, const Carried& carried, const Instance* instance,
+              const ObjectTrackerInput& input);
+  std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped.
+  void lift(Track& track, const std::vector<cv::Point2f>& pixels,
+            const ObjectTrackerInput& input) const;
+  TrackedObject report(const Track& track, const ObjectTrackerInput& input) const;
+
+  ObjectTrackingConfig config_;
+  int sample_step_px_ = 5;
+  uint64_t next_id_ = 1;
+  std::vector<Track> tracks_;  // ordered by id
+  cv::Mat previous_labels_;
+};
+
+}  // namespace dynanav

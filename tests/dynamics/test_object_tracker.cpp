@@ -1,0 +1,132 @@
+// ObjectTracker on synthetic frames: a box-shaped object sliding right with a known flow field;
+// ids survive a frame the segmenter misses, new objects get new ids, ended ids are not reused.
+#include <gtest/gtest.h>
+
+#include "dynamics/object_tracker.hpp"
+
+using namespace dynanav;
+
+namespace {
+
+constexpr int kW = 640, kH = 480;
+constexpr float kPixelsPerFrame = 3.f;
+
+PinholeCamera camera() {
+  PinholeCamera c;
+  c.fx = c.fy = 525.0;
+  c.cx = 319.5;
+  c.cy = 239.5;
+  return c;
+}
+
+struct SynthFrame {
+  Instances instances;
+  cv::Mat depth_m;
+  cv::Mat flow_half;
+};
+
+/// Objects given by their left edge x0 (top 150, 60 x 120 px, 2 m away, a relief of 5 cm that
+/// moves with them); `present` says whether the segmenter reports each.
+SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present, bool with_flow) {
+  SynthFrame f;
+  f.instances = Instances::none(cv::Size(kW, kH));
+  f.depth_m = cv::Mat(kH, kW, CV_32F, cv::Scalar(4.0f));
+  for (size_t k = 0; k < x0.size(); ++k) {
+    const int left = int(std::lround(x0[k]));
+    const cv::Rect box(left, 150, 60, 120);
+    for (int y = box.y; y < box.y + box.height; ++y)
+      for (int x = box.x; x < box.x + box.width; ++x)
+        f.depth_m.at<float>(y, x) =
+            2.0f + 0.05f * float((x - left) % 9) / 9.f + 0.02f * float(y % 5);
+    if (!present[k]) continue;
+    const uint16_t id = uint16_t(k + 1);
+    f.instances.labels(box).setTo(id);
+    Instance it;
+    it.id = id;
+    it.class_name = "box";
+    it.box = box;
+    f.instances.items.push_back(it);
+  }
+  if (with_flow)
+    f.flow_half = cv::Mat(kH / 2, kW / 2, CV_32FC2, cv::Scalar(kPixelsPerFrame / 2, 0.f));
+  return f;
+}
+
+std::vector<TrackedObject> step(ObjectTracker& tracker, const SynthFrame& f, int index) {
+  FrameDynamics dynamics;
+  for (const Instance& it : f.instances.items) dynamics.moving_ids.push_back(it.id);
+  const SE3 T_world_camera = SE3::Identity();
+  const PinholeCamera cam = camera();
+  return tracker.track({index, index / 30.0, f.instances, dynamics, f.flow_half, f.depth_m,
+                        T_world_camera, true, cam});
+}
+
+}  // namespace
+
+TEST(ObjectTracker, KeepsIdThroughMissedFrameAndMeasuresSpeed) {
+  ObjectTrackingConfig config;
+  config.max_missed_frames = 3;
+  ObjectTracker tracker(config, 5);
+  uint64_t id = 0;
+  float x = 100.f;
+  std::vector<TrackedObject> out;
+  for (int i = 0; i < 40; ++i) {
+    const bool seen = i != 20;  // the segmenter misses frame 20
+    out = step(tracker, frame({x}, {seen}, i > 0), i);
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i == 0) id = out[0].id;
+    EXPECT_EQ(out[0].id, id) << "frame " << i;
+    EXPECT_EQ(out[0].missed_frames, seen ? 0 : 1);
+    x += kPixelsPerFrame;
+  }
+  // 3 px per frame at 2.03 m and fx 525, 30 frames/s: 0.35 m/s to the right.
+  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  EXPECT_NEAR(out[0].v_world_mps.x(), expected, 0.06);
+  EXPECT_NEAR(out[0].speed_mps, expected, 0.08);
+  EXPECT_TRUE(out[0].dynamic);
+  EXPECT_FALSE(out[0].predicted_path.empty());
+  EXPECT_GT(out[0].motion_inliers, 50);
+}
+
+TEST(ObjectTracker, NewObjectsGetNewIdsAndEndedIdsAreNotReused) {
+  ObjectTrackingConfig config;
+  config.max_missed_frames = 2;
+  ObjectTracker tracker(config, 5);
+  auto out = step(tracker, frame({100.f}, {true}, false), 0);
+  ASSERT_EQ(out.size(), 1u);
+  const uint64_t first = out[0].id;
+  out = step(tracker, frame({103.f, 400.f}, {true, true}, true), 1);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].id, first);
+  EXPECT_NE(out[1].id, first);
+  const uint64_t second = out[1].id;
+  // Both vanish from the images (no depth, no masks) long enough to end.
+  SynthFrame empty;
+  empty.instances = Instances::none(cv::Size(kW, kH));
+  empty.depth_m = cv::Mat(kH, kW, CV_32F, cv::Scalar(0.f));
+  empty.flow_half = cv::Mat(kH / 2, kW / 2, CV_32FC2, cv::Scalar(0.f, 0.f));
+  for (int i = 2; i < 8; ++i) out = step(tracker, empty, i);
+  EXPECT_TRUE(out.empty());
+  EXPECT_EQ(tracker.liveTracks(), 0u);
+  out = step(tracker, frame({100.f}, {true}, true), 8);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_GT(out[0].id, second);  // a fresh id, never an old one
+}
+
+TEST(ObjectTracker, StaticObjectHasZeroVelocity) {
+  ObjectTrackingConfig config;
+  ObjectTracker tracker(config, 5);
+  std::vector<TrackedObject> out;
+  for (int i = 0; i < 10; ++i) {
+    SynthFrame f = frame({200.f}, {true}, i > 0);
+    f.flow_half.setTo(cv::Scalar(0.f, 0.f));
+    const SE3 T = SE3::Identity();
+    const PinholeCamera cam = camera();
+    FrameDynamics dynamics;  // never found moving
+    out = tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+  }
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_FALSE(out[0].dynamic);
+  EXPECT_EQ(out[0].speed_mps, 0.0);
+  EXPECT_NEAR(out[0].distance_m, std::hypot(2.08, (230 - 239.5) * 2.08 / 525.0, 0.0), 0.2);
+}
