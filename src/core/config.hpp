@@ -15,6 +15,7 @@ struct Config {
   PerceptionConfig perception;
   DynamicsConfig dynamics;
   RunConfig run;
+  OutputsConfig outputs;
 
   template <class V> void visitSections(V&& v) {
     v("io", io);
@@ -25,6 +26,7 @@ struct Config {
     v("perception", perception);
     v("dynamics", dynamics);
     v("run", run);
+    v("outputs", outputs);
   }
 
   /// Config from a YAML file: missing keys keep defaults; unknown keys or wrong types throw

@@ -10,3 +10,4 @@
 #include "core/config/perception.hpp"
 #include "core/config/dynamics.hpp"
 #include "core/config/run.hpp"
+#include "core/config/outputs.hpp"
