@@ -18,9 +18,10 @@ seq="$out/office"
 echo "== simulating the office scene ($frames frames) into $seq"
 "$cli" simulate --scenario office --out "$seq" --frames "$frames" --seed 1
 echo "== running dynanav on it"
-"$cli" run "$seq" --out "$out/run" --deterministic
+"$cli" run "$seq" --out "$out/run" --deterministic --all-outputs
 echo "== accuracy against the simulator's ground truth"
 "$cli" eval --gt "$seq/groundtruth.txt" --est "$out/run/trajectory.txt" --sequence "$seq"
 echo "== summary (from $out/run/stats.json)"
 grep -E '^  "(frames|tracked|lost|keyframes|map_points|fps|loops|relocalisations)"' "$out/run/stats.json" || true
 echo "outputs: $out/run (trajectory.txt, keyframes.txt, stats.json, config_used.yaml); sequence: $seq"
+echo "maps and pictures: $out/run/map.ply map.bt occupancy.png topview.png annotated.mp4 report.html (open report.html in a browser)"

@@ -114,7 +114,8 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_flag("--map", flags->map,
                 "write the static map: map.ply, map.bt, occupancy.png, topview.png, map_info.json");
   sub->add_flag("--video", flags->video, "write annotated.mp4 (masks, objects, messages)");
-  sub->add_flag("--report", flags->report, "write report.html (accuracy, timing, speeds, messages)");
+  sub->add_flag("--report", flags->report,
+                "write report.html (accuracy, timing, speeds, messages)");
   sub->add_flag("--all-outputs", flags->all_outputs, "--map --video --report");
   sub->callback([&chosen, flags] { chosen = [flags] { return runCommand(*flags); }; });
 }

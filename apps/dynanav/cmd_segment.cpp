@@ -14,7 +14,8 @@
 namespace dynanav::cli {
 
 void registerSegment(CLI::App& root, Action& chosen) {
-  auto* sub = root.add_subcommand("segment", "segment people and objects: label PNGs + overlay video");
+  auto* sub =
+      root.add_subcommand("segment", "segment people and objects: label PNGs + overlay video");
   struct Args {
     std::string sequence, out, config, segmenter = "auto", models;
     int segment_every = 1, max_frames = -1;
@@ -26,12 +27,15 @@ void registerSegment(CLI::App& root, Action& chosen) {
   sub->add_option("--config", args->config, "YAML config (perception and io sections apply)");
   sub->add_option("--segmenter", args->segmenter, "auto | dnn | hog | masks | none")
       ->check(CLI::IsMember({"auto", "dnn", "hog", "masks", "none"}));
-  sub->add_option("--models", args->models, "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
-  sub->add_option("--segment-every", args->segment_every, "segment every k-th frame, propagate masks between")
+  sub->add_option("--models", args->models,
+                  "folder with the model files (default: $DYNANAV_MODELS, ../shared/models)");
+  sub->add_option("--segment-every", args->segment_every,
+                  "segment every k-th frame, propagate masks between")
       ->check(CLI::PositiveNumber);
   sub->add_option("--max-frames", args->max_frames, "stop after N frames");
   sub->add_flag("--no-video", args->no_video, "skip the overlay video");
-  sub->add_flag("--contact-sheets", args->contact_sheets, "also write OUT/contact/sheet_NNN.png (48 overlays each)");
+  sub->add_flag("--contact-sheets", args->contact_sheets,
+                "also write OUT/contact/sheet_NNN.png (48 overlays each)");
   sub->callback([&chosen, args] {
     chosen = [args] {
       const Config config = args->config.empty() ? Config{} : Config::load(args->config);
@@ -63,9 +67,9 @@ void registerSegment(CLI::App& root, Action& chosen) {
           video && !video->path().empty()
               ? ", video " + video->path().string() + " (" + video->fourcc() + ")"
               : "";
-      spdlog::info("segment: {} frames with {} ({} skipped), a person in {}; masks in {}{}", s.frames,
-                   s.segmenter, s.skipped, s.frames_with_person, (options.out_dir / "masks").string(),
-                   video_note);
+      spdlog::info("segment: {} frames with {} ({} skipped), a person in {}; masks in {}{}",
+                   s.frames, s.segmenter, s.skipped, s.frames_with_person,
+                   (options.out_dir / "masks").string(), video_note);
       return kExitOk;
     };
   });

@@ -1,10 +1,10 @@
 #include "mapping/dense_cloud.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
-#include <algorithm>
 
 #include "core/error.hpp"
 
@@ -43,7 +43,8 @@ ColouredCloud denseCloud(const std::vector<PosedKeyframe>& keyframes, const cv::
     const MapKeyframe& kf = *posed.keyframe;
     const Eigen::Matrix3f R = posed.T_world_camera.linear().cast<float>();
     const Eigen::Vector3f t = posed.T_world_camera.translation().cast<float>();
-    const int rows = std::min(kf.depth_m.rows, rays.rows), cols = std::min(kf.depth_m.cols, rays.cols);
+    const int rows = std::min(kf.depth_m.rows, rays.rows),
+              cols = std::min(kf.depth_m.cols, rays.cols);
     samples.reserve(samples.size() + size_t(rows / step + 1) * size_t(cols / step + 1));
     for (int y = 0; y < rows; y += step) {
       const float* depth = kf.depth_m.ptr<float>(y);

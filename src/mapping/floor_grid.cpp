@@ -36,7 +36,8 @@ FloorPlane estimateFloor(const ColouredCloud& cloud, const std::vector<Vec3>& ca
   // Counting inliers on ~20k points is enough to rank planes and keeps this well under 50 ms.
   const size_t stride = std::max<size_t>(1, cloud.size() / 20000);
   std::vector<Vec3> sample;
-  for (size_t i = 0; i < cloud.size(); i += stride) sample.push_back(cloud.p_world[i].cast<double>());
+  for (size_t i = 0; i < cloud.size(); i += stride)
+    sample.push_back(cloud.p_world[i].cast<double>());
   const Vec3 up_hint(0, -1, 0);
   const double min_cos = std::cos(max_tilt_deg * M_PI / 180.0);
   std::mt19937 rng(7);
@@ -68,9 +69,10 @@ FloorPlane estimateFloor(const ColouredCloud& cloud, const std::vector<Vec3>& ca
   if (best < 50) return none;
   const Candidate* chosen = nullptr;
   for (const Candidate& c : candidates)
-    if (c.inliers >= best / 2 && (!chosen || c.lowest_camera_height > chosen->lowest_camera_height + kInlierM ||
-                                  (std::abs(c.lowest_camera_height - chosen->lowest_camera_height) <= kInlierM &&
-                                   c.inliers > chosen->inliers)))
+    if (c.inliers >= best / 2 &&
+        (!chosen || c.lowest_camera_height > chosen->lowest_camera_height + kInlierM ||
+         (std::abs(c.lowest_camera_height - chosen->lowest_camera_height) <= kInlierM &&
+          c.inliers > chosen->inliers)))
       chosen = &c;
   std::vector<Vec3> inliers;
   for (const Vec3& p : sample)
@@ -132,7 +134,8 @@ OccupancyGrid occupancyGrid(const octomap::ColorOcTree& tree, const FloorPlane& 
       const int q1 = int((grid.forward0_m - leaf.forward_m + leaf.half_m) / cell_m - 1e-6);
       const uint8_t value = occupied_pass ? OccupancyGrid::kOccupied : OccupancyGrid::kFree;
       for (int r = std::max(0, q0); r <= std::min(rows - 1, q1); ++r)
-        for (int c = std::max(0, c0); c <= std::min(cols - 1, c1); ++c) grid.cells.at<uint8_t>(r, c) = value;
+        for (int c = std::max(0, c0); c <= std::min(cols - 1, c1); ++c)
+          grid.cells.at<uint8_t>(r, c) = value;
     }
   return grid;
 }

@@ -18,7 +18,8 @@ std::unique_ptr<octomap::ColorOcTree> buildOctree(const std::vector<PosedKeyfram
     const Vec3 t = posed.T_world_camera.translation();
     octomap::Pointcloud scan;
     std::vector<std::pair<octomap::point3d, cv::Vec3b>> colours;
-    const int rows = std::min(kf.depth_m.rows, rays.rows), cols = std::min(kf.depth_m.cols, rays.cols);
+    const int rows = std::min(kf.depth_m.rows, rays.rows),
+              cols = std::min(kf.depth_m.cols, rays.cols);
     // Offset the sampling grid per keyframe so successive keyframes' rays interleave.
     const int offset = int(k % size_t(step));
     for (int y = offset; y < rows; y += step) {
@@ -37,7 +38,8 @@ std::unique_ptr<octomap::ColorOcTree> buildOctree(const std::vector<PosedKeyfram
     // discretize: one ray per end cell (many pixels hit the same 5 cm cell at close range).
     tree->insertPointCloud(scan, origin, options.max_range_m, /*lazy_eval=*/true,
                            /*discretize=*/true);
-    for (const auto& [q, c] : colours) tree->integrateNodeColor(q.x(), q.y(), q.z(), c[2], c[1], c[0]);
+    for (const auto& [q, c] : colours)
+      tree->integrateNodeColor(q.x(), q.y(), q.z(), c[2], c[1], c[0]);
   }
   tree->updateInnerOccupancy();
   return tree;

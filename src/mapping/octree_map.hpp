@@ -2,10 +2,10 @@
 // The OctoMap of the static scene (issue 15): each keyframe's static depth is ray cast from the
 // camera centre, so a cell occupied early on (a chair before it was moved) is cleared when later
 // rays pass through it. Ghost-free by construction, given free space is observed.
-#include <filesystem>
-#include <memory>
 #include <octomap/ColorOcTree.h>
 #include <octomap/OcTree.h>
+#include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "core/se3.hpp"

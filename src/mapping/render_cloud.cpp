@@ -44,7 +44,8 @@ cv::Mat renderCloud(const ColouredCloud& cloud, const FloorPlane& floor, const C
   const bool top = view.kind == "top";
   if (top) {
     R << 1, 0, 0, 0, -1, 0, 0, 0, -1;  // image right = right, image down = -forward, depth = -h
-    focal_px = 0.95 * std::min(view.size.width / (r1 - r0 + 1e-3), view.size.height / (f1 - f0 + 1e-3));
+    focal_px =
+        0.95 * std::min(view.size.width / (r1 - r0 + 1e-3), view.size.height / (f1 - f0 + 1e-3));
     eye = centre;
   } else {
     const double el = view.elevation_deg * M_PI / 180, az = view.azimuth_deg * M_PI / 180;

@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <future>
-#include <tuple>
 #include <opencv2/imgcodecs.hpp>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -48,8 +48,8 @@ StaticMap buildStaticMap(const std::vector<PosedKeyframe>& keyframes, const cv::
   for (const PosedKeyframe& k : keyframes) centres.push_back(k.T_world_camera.translation());
   const FloorPlane floor = estimateFloor(map.cloud, centres);
   if (floor.found)
-    map.grid = occupancyGrid(*map.tree, floor, options.walk_min_height_m,
-                             options.walk_max_height_m, options.grid_cell_m);
+    map.grid = occupancyGrid(*map.tree, floor, options.walk_min_height_m, options.walk_max_height_m,
+                             options.grid_cell_m);
   map.grid_ms = msSince(t0);
   return map;
 }
@@ -72,8 +72,11 @@ void writeStaticMap(const std::filesystem::path& out_dir, const StaticMap& map) 
         {"octree", map.octree_ms},
         {"free_space_filter", map.filter_ms},
         {"grid", map.grid_ms}}},
-      {"floor", {{"found", g.floor.found}, {"up", vec(g.floor.up)}, {"offset_m", g.floor.offset_m},
-                 {"inliers", g.floor.inliers}}}};
+      {"floor",
+       {{"found", g.floor.found},
+        {"up", vec(g.floor.up)},
+        {"offset_m", g.floor.offset_m},
+        {"inliers", g.floor.inliers}}}};
   if (!g.cells.empty())
     info["occupancy"] = {{"file", "occupancy.png"},
                          {"cell_m", g.cell_m},
@@ -83,8 +86,9 @@ void writeStaticMap(const std::filesystem::path& out_dir, const StaticMap& map) 
                          {"forward_axis", vec(g.forward)},
                          {"right0_m", g.right0_m},
                          {"forward0_m", g.forward0_m},
-                         {"legend", "white free, black occupied, grey unknown; column = "
-                                    "(right.p - right0)/cell, row = (forward0 - forward.p)/cell"}};
+                         {"legend",
+                          "white free, black occupied, grey unknown; column = "
+                          "(right.p - right0)/cell, row = (forward0 - forward.p)/cell"}};
   writeJsonFile(out_dir / "map_info.json", info);
 }
 

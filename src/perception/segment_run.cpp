@@ -55,8 +55,9 @@ SegmentRunSummary runSegmentation(const SegmentRunOptions& options) {
   MaskFolderWriter masks(options.out_dir);
   StageTimers timers;
   nlohmann::json per_frame = nlohmann::json::array();
-  const size_t total = options.max_frames < 0 ? sequence.size()
-                                              : std::min(sequence.size(), size_t(options.max_frames));
+  const size_t total = options.max_frames < 0
+                           ? sequence.size()
+                           : std::min(sequence.size(), size_t(options.max_frames));
   const bool progress = options.progress && isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
   for (size_t i = 0; i < total; ++i) {
@@ -82,21 +83,22 @@ SegmentRunSummary runSegmentation(const SegmentRunOptions& options) {
     const int persons = written.count("person");
     summary.frames_with_person += persons > 0;
     ++summary.frames;
-    per_frame.push_back({{"index", frame.index}, {"stem", stem}, {"ms", ms}, {"persons", persons},
-                         {"instances", written.items.size()}, {"steps", steps}});
+    per_frame.push_back({{"index", frame.index},
+                         {"stem", stem},
+                         {"ms", ms},
+                         {"persons", persons},
+                         {"instances", written.items.size()},
+                         {"steps", steps}});
     if (options.on_frame) options.on_frame(frame, written);
     if (progress) printProgress(i + 1, total, msSince(start) / 1000.0);
   }
   masks.finish();
 
-  const nlohmann::json stats = {{"segmenter", summary.segmenter},
-                                {"frames", summary.frames},
-                                {"skipped", summary.skipped},
-                                {"frames_with_person", summary.frames_with_person},
-                                {"threads", cv::getNumThreads()},
-                                {"wall_s", msSince(start) / 1000.0},
-                                {"stage_ms", summaryJson(timers)},
-                                {"per_frame", per_frame}};
+  const nlohmann::json stats = {
+      {"segmenter", summary.segmenter},  {"frames", summary.frames},
+      {"skipped", summary.skipped},      {"frames_with_person", summary.frames_with_person},
+      {"threads", cv::getNumThreads()},  {"wall_s", msSince(start) / 1000.0},
+      {"stage_ms", summaryJson(timers)}, {"per_frame", per_frame}};
   writeJsonFile(options.out_dir / "stats.json", stats);
   return summary;
 }

@@ -36,8 +36,8 @@ void MapSink::consume(const RgbdFrame& frame, const FrameResult& result) {
   if (!result.keyframe && !due) return;
   cv::Mat static_mask;
   if (!result.instances.labels.empty())
-    static_mask = staticMask(result.instances.labels, dynamicInstanceIds(result),
-                             config_.mask_dilation_px);
+    static_mask =
+        staticMask(result.instances.labels, dynamicInstanceIds(result), config_.mask_dilation_px);
   keyframes_.push_back(keepKeyframe(result.stamp_s, frame.bgr, frame.depth_m, static_mask,
                                     config_.keyframe_downscale, config_.max_depth_m));
 }

@@ -81,7 +81,8 @@ void ReportSink::finish(const RunEnd& end) {
   d.events = events_;
   d.first_stamp_s = first_stamp_s_ < 0 ? 0.0 : first_stamp_s_;
   d.last_stamp_s = last_stamp_s_;
-  if (std::filesystem::exists(out_dir_ / "topview.png")) d.topview_png = fileBytes(out_dir_ / "topview.png");
+  if (std::filesystem::exists(out_dir_ / "topview.png"))
+    d.topview_png = fileBytes(out_dir_ / "topview.png");
   for (const auto& entry : std::filesystem::directory_iterator(out_dir_))
     if (entry.is_regular_file()) d.outputs.push_back(entry.path().filename().string());
   d.outputs.push_back("report.html");

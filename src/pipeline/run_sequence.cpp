@@ -10,10 +10,10 @@
 #include "core/error.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/map_sink.hpp"
-#include "pipeline/report_sink.hpp"
-#include "pipeline/video_sink.hpp"
 #include "pipeline/realtime_runner.hpp"
+#include "pipeline/report_sink.hpp"
 #include "pipeline/system.hpp"
+#include "pipeline/video_sink.hpp"
 #include "slam/slam_system.hpp"
 
 namespace dynanav {

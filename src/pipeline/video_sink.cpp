@@ -11,23 +11,25 @@ namespace dynanav {
 
 namespace {
 constexpr double kMessageShownS = 3.0;  // about as long as a spoken message lasts
-constexpr size_t kQueueFrames = 8;       // bounds memory; the tracker waits if drawing falls behind
-}
+constexpr size_t kQueueFrames = 8;      // bounds memory; the tracker waits if drawing falls behind
+}  // namespace
 
 std::vector<InstanceStatus> instanceStatuses(const FrameResult& result) {
   std::vector<InstanceStatus> out;
   for (const InstanceVerdict& v : result.verdicts)
-    out.push_back({v.id, v.moving              ? "moving"
-                         : v.prior_dynamic     ? "prior"
-                         : v.verified_static   ? "static"
-                                               : ""});
+    out.push_back({v.id, v.moving            ? "moving"
+                         : v.prior_dynamic   ? "prior"
+                         : v.verified_static ? "static"
+                                             : ""});
   return out;
 }
 
 VideoSink::VideoSink(std::filesystem::path out_dir, const PinholeCamera& camera, double fps)
     : camera_(camera), video_(std::move(out_dir), "annotated", fps), worker_([this] { work(); }) {}
 
-VideoSink::~VideoSink() { stop(); }
+VideoSink::~VideoSink() {
+  stop();
+}
 
 void VideoSink::consume(const RgbdFrame& frame, const FrameResult& result) {
   if (!result.events.empty()) message_ = result.events.back();
@@ -85,9 +87,10 @@ void VideoSink::stop() {
 void VideoSink::finish(const RunEnd&) {
   stop();  // drains the queue first
   if (!video_.path().empty())
-    spdlog::info("video: {} ({} frames, fourcc {}); per frame {:.1f} ms drawing, {:.1f} ms encoding",
-                 video_.path().string(), video_.frames(), video_.fourcc(),
-                 draw_ms_ / std::max(1, video_.frames()), encode_ms_ / std::max(1, video_.frames()));
+    spdlog::info(
+        "video: {} ({} frames, fourcc {}); per frame {:.1f} ms drawing, {:.1f} ms encoding",
+        video_.path().string(), video_.frames(), video_.fourcc(),
+        draw_ms_ / std::max(1, video_.frames()), encode_ms_ / std::max(1, video_.frames()));
 }
 
 }  // namespace dynanav

@@ -3,9 +3,9 @@
 // frame drawn by viz/annotate from the frame and its FrameResult. Drawing and encoding run on a
 // worker thread behind a short queue (the tracking thread only copies the frame), so the video
 // costs little wall time where a second core is free; frames stay in order.
-#include <filesystem>
 #include <condition_variable>
 #include <deque>
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -41,7 +41,7 @@ class VideoSink final : public FrameSink {
 
   PinholeCamera camera_;
   VideoOutput video_;
-  std::optional<FeedbackEvent> message_;  ///< the latest one, shown for a few seconds
+  std::optional<FeedbackEvent> message_;    ///< the latest one, shown for a few seconds
   double draw_ms_ = 0.0, encode_ms_ = 0.0;  ///< worker thread only
   std::mutex mutex_;
   std::condition_variable changed_;

@@ -9,8 +9,8 @@ namespace {
 
 void textWithShadow(cv::Mat& image, const std::string& text, cv::Point at, double scale,
                     const cv::Scalar& colour, int thickness = 1) {
-  cv::putText(image, text, at + cv::Point(1, 1), cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar(0, 0, 0),
-              thickness + 2, cv::LINE_AA);
+  cv::putText(image, text, at + cv::Point(1, 1), cv::FONT_HERSHEY_SIMPLEX, scale,
+              cv::Scalar(0, 0, 0), thickness + 2, cv::LINE_AA);
   cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, thickness, cv::LINE_AA);
 }
 
@@ -40,8 +40,7 @@ cv::Mat annotateFrame(const cv::Mat& bgr, const Instances& instances, const Pinh
     cv::circle(out, centre, 7, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
     if (o.speed_mps > 0.05) {
       // The velocity half a second ahead, projected: where it will be if it keeps going.
-      const Vec3 ahead =
-          o.p_camera + 0.5 * (a.T_world_camera.linear().transpose() * o.v_world_mps);
+      const Vec3 ahead = o.p_camera + 0.5 * (a.T_world_camera.linear().transpose() * o.v_world_mps);
       if (ahead.z() > 0.1) {
         const Eigen::Vector2d tip = camera.project(ahead);
         cv::arrowedLine(out, centre, cv::Point(int(tip.x()), int(tip.y())), colour, 2, cv::LINE_AA,

@@ -68,10 +68,13 @@ std::string reportHtml(const ReportData& d) {
   o << "<h1>dynanav run report</h1>\n<h2 id=\"summary\">Summary</h2>\n<table>\n";
   row(o, "sequence", d.sequence);
   row(o, "mode", s.value("mode", std::string("-")));
-  row(o, "frames", number(s, "frames", "%.0f") + " (tracked " + number(s, "tracked", "%.0f") +
-                       ", lost " + number(s, "lost", "%.0f") + ")");
-  row(o, "keyframes / map points", number(s, "keyframes", "%.0f") + " / " + number(s, "map_points", "%.0f"));
-  row(o, "wall time", number(s, "wall_s", "%.2f") + " s (" + number(s, "fps", "%.1f") + " frames/s)");
+  row(o, "frames",
+      number(s, "frames", "%.0f") + " (tracked " + number(s, "tracked", "%.0f") + ", lost " +
+          number(s, "lost", "%.0f") + ")");
+  row(o, "keyframes / map points",
+      number(s, "keyframes", "%.0f") + " / " + number(s, "map_points", "%.0f"));
+  row(o, "wall time",
+      number(s, "wall_s", "%.2f") + " s (" + number(s, "fps", "%.1f") + " frames/s)");
   row(o, "loops closed", number(s, "loops", "%.0f"));
   o << "</table>\n";
 
@@ -80,15 +83,18 @@ std::string reportHtml(const ReportData& d) {
     const ReportAccuracy& a = *d.accuracy;
     const ErrorStats& t = a.ate.translation_m;
     o << "<table>\n";
-    row(o, "ATE RMSE", format("%.4f m (mean %.4f, median %.4f, max %.4f; %zu of %zu poses matched)",
-                              t.rmse, t.mean, t.median, t.max, a.ate.matched, a.ate.estimated));
+    row(o, "ATE RMSE",
+        format("%.4f m (mean %.4f, median %.4f, max %.4f; %zu of %zu poses matched)", t.rmse,
+               t.mean, t.median, t.max, a.ate.matched, a.ate.estimated));
     if (a.rpe)
-      row(o, "RPE", format("translation rmse %.4f m/frame, rotation rmse %.3f deg/frame (%zu pairs)",
-                           a.rpe->translation_m.rmse, a.rpe->rotation_deg.rmse, a.rpe->pairs));
+      row(o, "RPE",
+          format("translation rmse %.4f m/frame, rotation rmse %.3f deg/frame (%zu pairs)",
+                 a.rpe->translation_m.rmse, a.rpe->rotation_deg.rmse, a.rpe->pairs));
     o << "</table>\n";
-    o << svgLinePlot({"plot-trajectory", "Trajectory from above (x-z, estimate aligned on ground truth)",
-                      "x (m)", "z (m)", 720, 420, true},
-                     a.trajectory_xz);
+    o << svgLinePlot(
+        {"plot-trajectory", "Trajectory from above (x-z, estimate aligned on ground truth)",
+         "x (m)", "z (m)", 720, 420, true},
+        a.trajectory_xz);
     o << svgLinePlot({"plot-ate", "Absolute trajectory error over time", "time (s)", "error (m)"},
                      {a.ate_over_time});
   } else {
@@ -104,14 +110,15 @@ std::string reportHtml(const ReportData& d) {
       means.push_back(t.value("mean", 0.0));
     }
   o << svgBarChart({"plot-timing", "Mean wall time per call (ms)", "", ""}, labels, means, "ms");
-  o << "<p class=\"note\">latency mean " << number(s.value("latency_ms", nlohmann::json::object()), "mean", "%.1f")
-    << " ms, p95 " << number(s.value("latency_ms", nlohmann::json::object()), "p95", "%.1f")
-    << " ms; peak memory " << number(s, "peak_rss_mb", "%.0f") << " MB</p>\n";
+  o << "<p class=\"note\">latency mean "
+    << number(s.value("latency_ms", nlohmann::json::object()), "mean", "%.1f") << " ms, p95 "
+    << number(s.value("latency_ms", nlohmann::json::object()), "p95", "%.1f") << " ms; peak memory "
+    << number(s, "peak_rss_mb", "%.0f") << " MB</p>\n";
 
   o << "<h2 id=\"speeds\">Speed of tracked objects</h2>\n";
-  if (d.speeds.empty())
-    o << "<p class=\"note\">no tracked objects in this run</p>\n";
-  o << svgLinePlot({"plot-speeds", "Speed over time per track", "time (s)", "speed (m/s)"}, d.speeds);
+  if (d.speeds.empty()) o << "<p class=\"note\">no tracked objects in this run</p>\n";
+  o << svgLinePlot({"plot-speeds", "Speed over time per track", "time (s)", "speed (m/s)"},
+                   d.speeds);
 
   o << "<h2 id=\"messages\">Messages to the wearer</h2>\n";
   PlotSeries marks{"message", {}, {}, 1, false, true};

@@ -25,13 +25,13 @@ struct ReportData {
   std::string sequence;
   nlohmann::json stats;  ///< OUT/stats.json as the run wrote it
   std::optional<ReportAccuracy> accuracy;
-  std::string accuracy_note;           ///< why there is none (no ground truth, too few poses)
-  std::vector<PlotSeries> speeds;      ///< one per track: time (s), speed (m/s)
-  std::vector<FeedbackEvent> events;   ///< in time order
-  double first_stamp_s = 0.0;          ///< times are shown relative to it
+  std::string accuracy_note;          ///< why there is none (no ground truth, too few poses)
+  std::vector<PlotSeries> speeds;     ///< one per track: time (s), speed (m/s)
+  std::vector<FeedbackEvent> events;  ///< in time order
+  double first_stamp_s = 0.0;         ///< times are shown relative to it
   double last_stamp_s = 0.0;
-  std::string topview_png;             ///< raw PNG bytes (empty: none)
-  std::vector<std::string> outputs;    ///< files written next to the report
+  std::string topview_png;           ///< raw PNG bytes (empty: none)
+  std::vector<std::string> outputs;  ///< files written next to the report
 };
 
 std::string reportHtml(const ReportData& data);

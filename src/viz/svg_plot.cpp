@@ -38,11 +38,20 @@ std::string htmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -69,11 +78,11 @@ std::string svgLinePlot(const PlotSpec& spec, const std::vector<PlotSeries>& ser
   auto X = [&](double x) { return left + (x - x0) / (x1 - x0) * pw; };
   auto Y = [&](double y) { return top + (y1 - y) / (y1 - y0) * ph; };
   std::ostringstream o;
-  o << "<svg class=\"plot\" id=\"" << htmlEscape(spec.id) << "\" width=\""
-    << spec.width << "\" height=\"" << spec.height << "\" viewBox=\"0 0 " << spec.width << " " << spec.height
+  o << "<svg class=\"plot\" id=\"" << htmlEscape(spec.id) << "\" width=\"" << spec.width
+    << "\" height=\"" << spec.height << "\" viewBox=\"0 0 " << spec.width << " " << spec.height
     << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  o << "<text x=\"" << left << "\" y=\"16\" font-size=\"13\" font-weight=\"bold\">" << htmlEscape(spec.title)
-    << "</text>\n";
+  o << "<text x=\"" << left << "\" y=\"16\" font-size=\"13\" font-weight=\"bold\">"
+    << htmlEscape(spec.title) << "</text>\n";
   o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
     << "\" fill=\"none\" stroke=\"#888\"/>\n";
   const double xs = tickStep(x1 - x0, 6), ys = tickStep(y1 - y0, 5);
@@ -82,30 +91,31 @@ std::string svgLinePlot(const PlotSpec& spec, const std::vector<PlotSeries>& ser
       << "\" stroke=\"#eee\"/><text x=\"" << X(t) << "\" y=\"" << top + ph + 14
       << "\" text-anchor=\"middle\">" << fmt(t) << "</text>\n";
   for (double t = std::ceil(y0 / ys) * ys; t <= y1 + 1e-9; t += ys)
-    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << Y(t) << "\" y2=\"" << Y(t)
-      << "\" stroke=\"#eee\"/><text x=\"" << left - 4 << "\" y=\"" << Y(t) + 4
+    o << "<line x1=\"" << left << "\" x2=\"" << left + pw << "\" y1=\"" << Y(t) << "\" y2=\""
+      << Y(t) << "\" stroke=\"#eee\"/><text x=\"" << left - 4 << "\" y=\"" << Y(t) + 4
       << "\" text-anchor=\"end\">" << fmt(t) << "</text>\n";
   o << "<text x=\"" << left + pw / 2 << "\" y=\"" << spec.height - 6 << "\" text-anchor=\"middle\">"
     << htmlEscape(spec.x_label) << "</text>\n";
-  o << "<text transform=\"translate(14," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-    << htmlEscape(spec.y_label) << "</text>\n";
+  o << "<text transform=\"translate(14," << top + ph / 2
+    << ") rotate(-90)\" text-anchor=\"middle\">" << htmlEscape(spec.y_label) << "</text>\n";
   for (size_t k = 0; k < series.size(); ++k) {
     const PlotSeries& s = series[k];
     const std::string colour = cssColour(s.colour_id);
     const size_t n = std::min(s.x.size(), s.y.size());
     if (s.markers) {
       for (size_t i = 0; i < n; ++i)
-        o << "<circle cx=\"" << X(s.x[i]) << "\" cy=\"" << Y(s.y[i]) << "\" r=\"3\" fill=\"" << colour
-          << "\"/>";
+        o << "<circle cx=\"" << X(s.x[i]) << "\" cy=\"" << Y(s.y[i]) << "\" r=\"3\" fill=\""
+          << colour << "\"/>";
     } else if (n > 0) {
-      o << "<polyline class=\"series\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.6\""
-        << (s.dashed ? " stroke-dasharray=\"5,3\"" : "") << " points=\"";
+      o << "<polyline class=\"series\" fill=\"none\" stroke=\"" << colour
+        << "\" stroke-width=\"1.6\"" << (s.dashed ? " stroke-dasharray=\"5,3\"" : "")
+        << " points=\"";
       for (size_t i = 0; i < n; ++i) o << X(s.x[i]) << "," << Y(s.y[i]) << " ";
       o << "\"/>";
     }
-    o << "\n<rect x=\"" << left + pw + 10 << "\" y=\"" << top + 4 + 16 * k << "\" width=\"12\" height=\"3\" fill=\""
-      << colour << "\"/><text x=\"" << left + pw + 26 << "\" y=\"" << top + 9 + 16 * k << "\">"
-      << htmlEscape(s.name) << "</text>\n";
+    o << "\n<rect x=\"" << left + pw + 10 << "\" y=\"" << top + 4 + 16 * k
+      << "\" width=\"12\" height=\"3\" fill=\"" << colour << "\"/><text x=\"" << left + pw + 26
+      << "\" y=\"" << top + 9 + 16 * k << "\">" << htmlEscape(s.name) << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();
@@ -115,18 +125,21 @@ std::string svgBarChart(const PlotSpec& spec, const std::vector<std::string>& la
                         const std::vector<double>& values, const std::string& unit) {
   const double left = 170, top = 28, bar_h = 16, gap = 4;
   const int height = int(top + (bar_h + gap) * double(labels.size()) + 10);
-  const double vmax = values.empty() ? 1.0 : std::max(1e-9, *std::max_element(values.begin(), values.end()));
+  const double vmax =
+      values.empty() ? 1.0 : std::max(1e-9, *std::max_element(values.begin(), values.end()));
   const double pw = spec.width - left - 90;
   std::ostringstream o;
-  o << "<svg class=\"plot\" id=\"" << htmlEscape(spec.id) << "\" width=\""
-    << spec.width << "\" height=\"" << height << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  o << "<text x=\"4\" y=\"16\" font-size=\"13\" font-weight=\"bold\">" << htmlEscape(spec.title) << "</text>\n";
+  o << "<svg class=\"plot\" id=\"" << htmlEscape(spec.id) << "\" width=\"" << spec.width
+    << "\" height=\"" << height << "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  o << "<text x=\"4\" y=\"16\" font-size=\"13\" font-weight=\"bold\">" << htmlEscape(spec.title)
+    << "</text>\n";
   for (size_t i = 0; i < labels.size(); ++i) {
     const double y = top + double(i) * (bar_h + gap);
-    o << "<text x=\"" << left - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << htmlEscape(labels[i])
-      << "</text><rect x=\"" << left << "\" y=\"" << y << "\" width=\"" << pw * values[i] / vmax
-      << "\" height=\"" << bar_h << "\" fill=\"#4a7fb5\"/><text x=\"" << left + pw * values[i] / vmax + 4
-      << "\" y=\"" << y + 12 << "\">" << fmt(values[i]) << " " << htmlEscape(unit) << "</text>\n";
+    o << "<text x=\"" << left - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">"
+      << htmlEscape(labels[i]) << "</text><rect x=\"" << left << "\" y=\"" << y << "\" width=\""
+      << pw * values[i] / vmax << "\" height=\"" << bar_h << "\" fill=\"#4a7fb5\"/><text x=\""
+      << left + pw * values[i] / vmax + 4 << "\" y=\"" << y + 12 << "\">" << fmt(values[i]) << " "
+      << htmlEscape(unit) << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();

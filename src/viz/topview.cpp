@@ -26,8 +26,9 @@ cv::Mat drawTopView(const OccupancyGrid& grid, const std::vector<Vec3>& wearer_p
     const auto points = polyline(path.p_world, colour, 2);
     if (points.empty()) continue;
     cv::circle(out, points.back(), 5, colour, cv::FILLED, cv::LINE_AA);
-    cv::putText(out, "#" + std::to_string(id) + " " + path.class_name, points.back() + cv::Point(6, -6),
-                cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    cv::putText(out, "#" + std::to_string(id) + " " + path.class_name,
+                points.back() + cv::Point(6, -6), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   }
   const auto wearer = polyline(wearer_path_world, cv::Scalar(255, 80, 0), 3);
   if (!wearer.empty()) {
@@ -37,8 +38,8 @@ cv::Mat drawTopView(const OccupancyGrid& grid, const std::vector<Vec3>& wearer_p
   // Legend and scale bar (1 m).
   const int bar = int(1.0 / grid.cell_m * scale_px);
   cv::line(out, {10, out.rows - 12}, {10 + bar, out.rows - 12}, cv::Scalar(0, 0, 0), 3);
-  cv::putText(out, "1 m", {14 + bar, out.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1,
-              cv::LINE_AA);
+  cv::putText(out, "1 m", {14 + bar, out.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   cv::putText(out, "wearer (blue): start green, end red; objects: one colour per id", {10, 18},
               cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   return out;

@@ -63,10 +63,13 @@ TEST(DenseCloud, OnePointPerVoxelAtTheMeanWithItsColour) {
   }
 }
 
+// GCC 12 warns falsely on small std::vector<cv::Vec3b> literals (-Wmaybe-uninitialized).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 TEST(DenseCloud, PlyRoundTrip) {
   ColouredCloud cloud;
   cloud.p_world = {{1, 2, 3}, {-0.5f, 0.25f, 7}};
-  cloud.bgr = {{1, 2, 3}, {250, 128, 0}};
+  cloud.bgr = {cv::Vec3b(1, 2, 3), cv::Vec3b(250, 128, 0)};
   const auto path = test::scratchDir("ply") / "c.ply";
   writePly(path, cloud);
   const ColouredCloud back = readPly(path);
@@ -74,6 +77,7 @@ TEST(DenseCloud, PlyRoundTrip) {
   EXPECT_EQ(back.p_world[1], cloud.p_world[1]);
   EXPECT_EQ(back.bgr[1], cloud.bgr[1]);
 }
+#pragma GCC diagnostic pop
 
 TEST(Octree, LaterFreeSpaceClearsABlockThatWentAway) {
   const MapKeyframe before = wallKeyframe(0, 3.0f, true), after = wallKeyframe(1, 3.0f, false);
@@ -87,8 +91,10 @@ TEST(Octree, LaterFreeSpaceClearsABlockThatWentAway) {
       {{&before, SE3::Identity()}, {&after, SE3::Identity()}, {&after, SE3::Identity()}}, rays,
       options);
   EXPECT_EQ(cellAt(*still, block_centre), CellState::kOccupied);
-  const auto tree = buildOctree({{&before, SE3::Identity()}, {&after, SE3::Identity()},
-                                 {&after, SE3::Identity()}, {&after, SE3::Identity()}},
+  const auto tree = buildOctree({{&before, SE3::Identity()},
+                                 {&after, SE3::Identity()},
+                                 {&after, SE3::Identity()},
+                                 {&after, SE3::Identity()}},
                                 rays, options);
   EXPECT_EQ(cellAt(*tree, block_centre), CellState::kFree);
   EXPECT_EQ(cellAt(*tree, Vec3(0.0, 0.0, 3.02)), CellState::kOccupied);  // the wall stays

@@ -24,7 +24,8 @@ struct OutputsConfig {
   template <class V>
   void visit(V&& v) {
     v("map", map,
-      "write map.ply (dense static cloud), map.bt (OctoMap), occupancy.png and topview.png (--map)");
+      "write map.ply (dense static cloud), map.bt (OctoMap), occupancy.png and topview.png "
+      "(--map)");
     v("video", video, "write annotated.mp4 (or annotated.avi when no H.264 encoder) (--video)");
     v("report", report, "write report.html: accuracy, timing, speeds, messages (--report)");
     v("cloud_voxel_m", cloud_voxel_m, "voxel size of map.ply's downsampling (m)");
@@ -40,12 +41,14 @@ struct OutputsConfig {
     v("cloud_pixel_step", cloud_pixel_step,
       "map.ply takes every k-th pixel (rows and columns) of the kept keyframe images");
     v("octree_pixel_step", octree_pixel_step,
-      "map.bt casts a ray for every k-th pixel of the kept images (ray casting dominates the cost)");
+      "map.bt casts a ray for every k-th pixel of the kept images (ray casting dominates the "
+      "cost)");
     v("mask_dilation_px", mask_dilation_px,
       "dynamic instances' masks grow by this many full-resolution pixels before removal (mask "
       "edges lag the body)");
     v("walk_min_height_m", walk_min_height_m, "occupancy grid: lowest obstacle height above floor");
-    v("walk_max_height_m", walk_max_height_m, "occupancy grid: highest obstacle height above floor");
+    v("walk_max_height_m", walk_max_height_m,
+      "occupancy grid: highest obstacle height above floor");
     v("grid_cell_m", grid_cell_m, "occupancy grid cell size (m)");
   }
 };

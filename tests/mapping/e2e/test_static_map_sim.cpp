@@ -139,9 +139,14 @@ CylinderCount countCylinder(const octomap::OcTree& tree, const Vec3& centre_slam
         if (x * x + y * y > radius_m * radius_m) continue;
         const Vec3 p = centre_slam + h * up + x * a + y * b;
         switch (cellState(tree, tree.search(p.x(), p.y(), p.z()))) {
-          case CellState::kOccupied: ++c.occupied; break;
-          case CellState::kFree: ++c.free; break;
-          default: ++c.unknown;
+          case CellState::kOccupied:
+            ++c.occupied;
+            break;
+          case CellState::kFree:
+            ++c.free;
+            break;
+          default:
+            ++c.unknown;
         }
       }
   return c;
