@@ -46,7 +46,7 @@ seq="$out/office"
 echo "== simulating the office scene ($frames frames) into $seq"
 "$cli" simulate --scenario office --out "$seq" --frames "$frames" --seed 1
 echo "== running dynanav on it (${segmenter_args[*]})"
-"$cli" run "$seq" --out "$out/run" --deterministic "${segmenter_args[@]}"
+"$cli" run "$seq" --out "$out/run" --deterministic --all-outputs "${segmenter_args[@]}"
 echo "== accuracy against the simulator's ground truth"
 "$cli" eval --gt "$seq/groundtruth.txt" --est "$out/run/trajectory.txt" --sequence "$seq"
 echo "== summary (from $out/run/stats.json)"
@@ -68,3 +68,4 @@ print("people: segmenter %s found a person in %d of %d frames (%.2f people per f
          dyn.get("mean_prior_instances", 0.0), shown))
 PY
 echo "outputs: $out/run (trajectory.txt, keyframes.txt, stats.json, config_used.yaml); sequence: $seq"
+echo "maps and pictures: $out/run/map.ply map.bt occupancy.png topview.png annotated.mp4 report.html (open report.html in a browser)"

@@ -29,6 +29,7 @@ struct RunFlags {
   int passes = 1;
   int max_frames = 0;
   bool quiet = false;
+  bool map = false, video = false, report = false, all_outputs = false;  // issue 15
 };
 
 int runCommand(const RunFlags& flags) {
@@ -72,6 +73,9 @@ int runCommand(const RunFlags& flags) {
                        "expects A:B with 0 <= A <= B < 1e9, got '" + flags.blackout + "'");
     options.blackout = std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
   }
+  options.config.outputs.map |= flags.map || flags.all_outputs;
+  options.config.outputs.video |= flags.video || flags.all_outputs;
+  options.config.outputs.report |= flags.report || flags.all_outputs;
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
   if (flags.quiet) spdlog::set_level(spdlog::level::warn);
   options.progress = !flags.quiet && isatty(STDERR_FILENO);
@@ -132,6 +136,12 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");
+  sub->add_flag("--map", flags->map,
+                "write the static map: map.ply, map.bt, occupancy.png, topview.png, map_info.json");
+  sub->add_flag("--video", flags->video, "write annotated.mp4 (masks, objects, messages)");
+  sub->add_flag("--report", flags->report,
+                "write report.html (accuracy, timing, speeds, messages)");
+  sub->add_flag("--all-outputs", flags->all_outputs, "--map --video --report");
   sub->callback([&chosen, flags] { chosen = [flags] { return runCommand(*flags); }; });
 }
 

@@ -2,11 +2,14 @@
 #include <spdlog/spdlog.h>
 
 #include <opencv2/core/utility.hpp>
+#include <optional>
 
 #include "apps/dynanav/commands.hpp"
 #include "core/config.hpp"
 #include "core/error.hpp"
 #include "perception/segment_run.hpp"
+#include "viz/instance_drawing.hpp"
+#include "viz/video_writer.hpp"
 
 namespace dynanav::cli {
 
@@ -46,14 +49,28 @@ void registerSegment(CLI::App& root, Action& chosen) {
       if (!args->models.empty()) options.perception.models_dir = args->models;
       options.io = config.io;
       options.max_frames = args->max_frames;
-      options.video = !args->no_video;
-      options.contact_sheets = args->contact_sheets;
+      // The overlay video (OUT/overlay.mp4, H.264; else .avi, MJPG) and contact sheets: viz/.
+      std::optional<VideoOutput> video;
+      if (!args->no_video) video.emplace(options.out_dir, "overlay", 30.0);
+      std::optional<ContactSheets> sheets;
+      if (args->contact_sheets) sheets.emplace((options.out_dir / "contact").string());
+      if (video || sheets)
+        options.on_frame = [&video, &sheets](const RgbdFrame& frame, const Instances& instances) {
+          const cv::Mat overlay = drawInstances(frame.bgr, instances);
+          if (sheets) sheets->add(overlay, frame.index);
+          if (video) video->write(overlay);
+        };
       if (options.perception.threads > 0) cv::setNumThreads(options.perception.threads);
       const SegmentRunSummary s = runSegmentation(options);
+      if (video) video->close();
+      if (sheets) sheets->flush();
+      const std::string video_note =
+          video && !video->path().empty()
+              ? ", video " + video->path().string() + " (" + video->fourcc() + ")"
+              : "";
       spdlog::info("segment: {} frames with {} ({} skipped), a person in {}; masks in {}{}",
                    s.frames, s.segmenter, s.skipped, s.frames_with_person,
-                   (options.out_dir / "masks").string(),
-                   s.video.empty() ? "" : ", video " + s.video.string());
+                   (options.out_dir / "masks").string(), video_note);
       return kExitOk;
     };
   });

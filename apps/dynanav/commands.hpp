@@ -32,5 +32,7 @@ void registerEvalObjects(CLI::App& root, Action& chosen); // cmd_eval_objects.cp
 void registerSimulate(CLI::App& root, Action& chosen);    // cmd_simulate.cpp
 void registerSegment(CLI::App& root, Action& chosen);     // cmd_segment.cpp
 void registerVocabulary(CLI::App& root, Action& chosen);  // cmd_vocabulary.cpp
+void registerRenderMap(CLI::App& root, Action& chosen);   // cmd_render_map.cpp
+void registerVideoFrame(CLI::App& root, Action& chosen);  // cmd_video_frame.cpp
 
 }  // namespace dynanav::cli

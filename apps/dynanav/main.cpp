@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
   dynanav::cli::registerSimulate(app, chosen);
   dynanav::cli::registerSegment(app, chosen);
   dynanav::cli::registerVocabulary(app, chosen);
+  dynanav::cli::registerRenderMap(app, chosen);
+  dynanav::cli::registerVideoFrame(app, chosen);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

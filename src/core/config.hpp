@@ -17,6 +17,7 @@ struct Config {
   DynamicsConfig dynamics;
   ObjectTrackingConfig objects;
   RunConfig run;
+  OutputsConfig outputs;
 
   template <class V>
   void visitSections(V&& v) {
@@ -29,6 +30,7 @@ struct Config {
     v("dynamics", dynamics);
     v("objects", objects);
     v("run", run);
+    v("outputs", outputs);
   }
 
   /// Config from a YAML file: missing keys keep defaults; unknown keys or wrong types throw

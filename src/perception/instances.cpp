@@ -54,46 +54,4 @@ void tightenToLabels(Instances& instances) {
   instances.items = std::move(kept);
 }
 
-namespace {
-
-cv::Scalar colourOf(uint16_t id) {
-  // Well-separated hues from the golden ratio, so neighbouring ids differ.
-  const double hue = std::fmod(double(id) * 0.618033988749895, 1.0) * 180.0;
-  cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue, 220, 255)), bgr;
-  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
-  const auto c = bgr.at<cv::Vec3b>(0, 0);
-  return {double(c[0]), double(c[1]), double(c[2])};
-}
-
-}  // namespace
-
-cv::Mat drawInstances(const cv::Mat& bgr, const Instances& instances) {
-  cv::Mat out = bgr.clone();
-  for (const auto& item : instances.items) {
-    const cv::Scalar colour = colourOf(item.id);
-    const cv::Mat m = instances.mask(item.id);
-    cv::Mat tint(out.size(), CV_8UC3, colour);
-    cv::Mat blended;
-    cv::addWeighted(out, 0.45, tint, 0.55, 0.0, blended);
-    blended.copyTo(out, m);
-    cv::rectangle(out, item.box, colour, 2);
-    const std::string text = item.class_name + " " + std::to_string(item.id) + " " +
-                             cv::format("%.2f", item.score) + " " + item.mask_source;
-    cv::putText(out, text, item.box.tl() + cv::Point(2, 14), cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-    if (item.keypoints) {
-      const BodyPart parts[] = {BodyPart::kLeftShoulder, BodyPart::kRightShoulder,
-                                BodyPart::kLeftHip, BodyPart::kRightHip};
-      for (BodyPart part : parts) {
-        const Keypoint& k = item.keypoints->at(part);
-        if (k.score < 0.2f) continue;
-        const bool shoulder = part == BodyPart::kLeftShoulder || part == BodyPart::kRightShoulder;
-        cv::circle(out, k.pixel, 5, shoulder ? cv::Scalar(0, 255, 255) : cv::Scalar(255, 0, 255),
-                   cv::FILLED, cv::LINE_AA);
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace dynanav

@@ -58,8 +58,4 @@ struct Instances {
 /// Recomputes each box from its labelled pixels and drops instances with no pixel left.
 void tightenToLabels(Instances& instances);
 
-/// Colours the labels over the image (for overlays and contact sheets): one colour per id,
-/// boxes, class names and, when present, shoulders and hips.
-cv::Mat drawInstances(const cv::Mat& bgr, const Instances& instances);
-
 }  // namespace dynanav

@@ -7,10 +7,6 @@
 #include <chrono>
 #include <cstdio>
 #include <opencv2/core/utility.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-#include <optional>
-#include <opencv2/videoio.hpp>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
@@ -23,23 +19,6 @@ namespace fs = std::filesystem;
 namespace dynanav {
 namespace {
 
-/// The first encoder this OpenCV build can open: Debian's FFmpeg has H.264 and MPEG-4; MJPG in
-/// AVI is OpenCV's own writer and always works.
-cv::VideoWriter openVideo(const fs::path& out_dir, cv::Size size, double fps, fs::path& path) {
-  const struct {
-    const char* fourcc;
-    const char* file;
-  } choices[] = {{"avc1", "overlay.mp4"}, {"mp4v", "overlay.mp4"}, {"MJPG", "overlay.avi"}};
-  for (const auto& c : choices) {
-    path = out_dir / c.file;
-    cv::VideoWriter writer(path.string(), cv::VideoWriter::fourcc(c.fourcc[0], c.fourcc[1], c.fourcc[2], c.fourcc[3]),
-                           fps, size);
-    if (writer.isOpened()) return writer;
-  }
-  path.clear();
-  return {};
-}
-
 void printProgress(size_t done, size_t total, double elapsed_s) {
   constexpr int kWidth = 30;
   const int filled = total ? int(kWidth * done / total) : kWidth;
@@ -48,36 +27,6 @@ void printProgress(size_t done, size_t total, double elapsed_s) {
                elapsed_s > 0 ? double(done) / elapsed_s : 0.0);
   if (done == total) std::fprintf(stderr, "\n");
 }
-
-/// Tiles overlay thumbnails, 8 × 6 per sheet, each stamped with its frame index.
-class ContactSheets {
- public:
-  explicit ContactSheets(fs::path dir) : dir_(std::move(dir)) { fs::create_directories(dir_); }
-  ~ContactSheets() { flush(); }
-  void add(const cv::Mat& overlay, int frame_index) {
-    if (sheet_.empty()) sheet_ = cv::Mat(kRows * kThumb.height, kCols * kThumb.width, CV_8UC3, cv::Scalar::all(0));
-    if (count_ == 0) first_ = frame_index;
-    const cv::Rect cell((count_ % kCols) * kThumb.width, (count_ / kCols) * kThumb.height, kThumb.width,
-                        kThumb.height);
-    cv::resize(overlay, sheet_(cell), kThumb, 0, 0, cv::INTER_AREA);
-    cv::putText(sheet_(cell), std::to_string(frame_index), {4, 18}, cv::FONT_HERSHEY_SIMPLEX, 0.6,
-                cv::Scalar(0, 255, 0), 2);
-    if (++count_ == kCols * kRows) flush();
-  }
-  void flush() {
-    if (count_ == 0) return;
-    cv::imwrite((dir_ / cv::format("sheet_%04d.png", first_)).string(), sheet_);
-    sheet_.setTo(cv::Scalar::all(0));
-    count_ = 0;
-  }
-
- private:
-  static constexpr int kCols = 8, kRows = 6;
-  inline static const cv::Size kThumb{200, 150};
-  fs::path dir_;
-  cv::Mat sheet_;
-  int count_ = 0, first_ = 0;
-};
 
 nlohmann::json summaryJson(const StageTimers& timers) {
   nlohmann::json out = nlohmann::json::object();
@@ -104,13 +53,11 @@ SegmentRunSummary runSegmentation(const SegmentRunOptions& options) {
   SegmentRunSummary summary;
   summary.segmenter = segmenter->name();
   MaskFolderWriter masks(options.out_dir);
-  cv::VideoWriter video;
-  std::optional<ContactSheets> sheets;
-  if (options.contact_sheets) sheets.emplace(options.out_dir / "contact");
   StageTimers timers;
   nlohmann::json per_frame = nlohmann::json::array();
-  const size_t total = options.max_frames < 0 ? sequence.size()
-                                              : std::min(sequence.size(), size_t(options.max_frames));
+  const size_t total = options.max_frames < 0
+                           ? sequence.size()
+                           : std::min(sequence.size(), size_t(options.max_frames));
   const bool progress = options.progress && isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
   for (size_t i = 0; i < total; ++i) {
@@ -136,31 +83,22 @@ SegmentRunSummary runSegmentation(const SegmentRunOptions& options) {
     const int persons = written.count("person");
     summary.frames_with_person += persons > 0;
     ++summary.frames;
-    per_frame.push_back({{"index", frame.index}, {"stem", stem}, {"ms", ms}, {"persons", persons},
-                         {"instances", written.items.size()}, {"steps", steps}});
-    if (options.video || sheets) {
-      const cv::Mat overlay = drawInstances(frame.bgr, written);
-      if (sheets) sheets->add(overlay, frame.index);
-      if (options.video && !video.isOpened() && summary.video.empty()) {
-        video = openVideo(options.out_dir, frame.bgr.size(), 30.0, summary.video);
-        if (!video.isOpened()) spdlog::warn("no video encoder could be opened; no overlay video");
-      }
-      if (video.isOpened()) video.write(overlay);
-    }
+    per_frame.push_back({{"index", frame.index},
+                         {"stem", stem},
+                         {"ms", ms},
+                         {"persons", persons},
+                         {"instances", written.items.size()},
+                         {"steps", steps}});
+    if (options.on_frame) options.on_frame(frame, written);
     if (progress) printProgress(i + 1, total, msSince(start) / 1000.0);
   }
   masks.finish();
-  if (sheets) sheets->flush();
-  video.release();
 
-  const nlohmann::json stats = {{"segmenter", summary.segmenter},
-                                {"frames", summary.frames},
-                                {"skipped", summary.skipped},
-                                {"frames_with_person", summary.frames_with_person},
-                                {"threads", cv::getNumThreads()},
-                                {"wall_s", msSince(start) / 1000.0},
-                                {"stage_ms", summaryJson(timers)},
-                                {"per_frame", per_frame}};
+  const nlohmann::json stats = {
+      {"segmenter", summary.segmenter},  {"frames", summary.frames},
+      {"skipped", summary.skipped},      {"frames_with_person", summary.frames_with_person},
+      {"threads", cv::getNumThreads()},  {"wall_s", msSince(start) / 1000.0},
+      {"stage_ms", summaryJson(timers)}, {"per_frame", per_frame}};
   writeJsonFile(options.out_dir / "stats.json", stats);
   return summary;
 }

@@ -1,11 +1,11 @@
 #pragma once
 // `dynanav segment`: segments a sequence and writes
 //   OUT/masks/<rgb stem>.png + OUT/masks.json   (the format the `masks` segmenter reads back)
-//   OUT/overlay.mp4 (H.264, else MPEG-4) or OUT/overlay.avi (MJPG) when no MP4 encoder exists
 //   OUT/stats.json                               (per-frame and per-step timing, counts)
-//   OUT/contact/sheet_NNN.png (optional)         overlays of 48 frames per sheet, numbered, for
-//                                                checking by eye what the segmenter found
+// and hands every frame with its instances to `on_frame`, where the CLI draws the overlay video
+// and contact sheets (viz/, which depends on perception, not the other way round).
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "core/config/io.hpp"
@@ -21,9 +21,9 @@ struct SegmentRunOptions {
   PerceptionConfig perception;
   IoConfig io;
   int max_frames = -1;   ///< < 0: all
-  bool video = true;     ///< write the overlay video
   bool progress = true;  ///< progress bar on stderr when it is a terminal
-  bool contact_sheets = false;  ///< OUT/contact/sheet_NNN.png: 48 overlay thumbnails each
+  /// Called with each segmented frame and the instances written for it (may be empty).
+  std::function<void(const RgbdFrame&, const Instances&)> on_frame;
 };
 
 struct SegmentRunSummary {
@@ -31,7 +31,6 @@ struct SegmentRunSummary {
   int skipped = 0;             ///< frames that could not be read
   int frames_with_person = 0;  ///< frames with at least one person instance
   std::string segmenter;
-  std::filesystem::path video;  ///< empty when no video was written
 };
 
 /// Throws InputError for a bad sequence folder or segmenter request.

@@ -7,15 +7,19 @@
 #include <chrono>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "io/json_io.hpp"
 #include "pipeline/frame_source.hpp"
+#include "pipeline/map_sink.hpp"
 #include "pipeline/objects_sink.hpp"
 #include "pipeline/realtime_runner.hpp"
+#include "pipeline/report_sink.hpp"
 #include "pipeline/run_outputs.hpp"
 #include "pipeline/system.hpp"
+#include "pipeline/video_sink.hpp"
 #include "slam/slam_system.hpp"
 
 namespace dynanav {
@@ -64,6 +68,14 @@ RunSummary runSequence(const RunOptions& options) {
   ObjectsSink objects(options.out_dir);
   ProgressSink progress(source.expected());
   std::vector<FrameSink*> sinks = {&trajectory, &stats, &objects};
+  // Issue 15: optional products; the report comes last (it reads stats.json and topview.png).
+  const OutputsConfig& outputs = options.config.outputs;
+  std::optional<MapSink> map_sink;
+  std::optional<VideoSink> video_sink;
+  std::optional<ReportSink> report_sink;
+  if (outputs.map) sinks.push_back(&map_sink.emplace(options.out_dir, outputs, source.camera()));
+  if (outputs.video) sinks.push_back(&video_sink.emplace(options.out_dir, source.camera()));
+  if (outputs.report) sinks.push_back(&report_sink.emplace(options.out_dir, options.sequence_dir));
   if (options.progress) sinks.push_back(&progress);
 
   RunSummary summary;

@@ -10,4 +10,5 @@
 #include "core/config/orb.hpp"
 #include "core/config/perception.hpp"
 #include "core/config/run.hpp"
+#include "core/config/outputs.hpp"
 #include "core/config/tracking.hpp"

@@ -1,0 +1,56 @@
+#pragma once
+// Config section `outputs` (see core/config.hpp for how sections are loaded and echoed): the
+// optional products of a run (issue 15): static map, annotated video, top view, run report.
+// To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
+
+namespace dynanav {
+
+/// Static maps (mapping/) and visual outputs (viz/) written at the end of `dynanav run`.
+struct OutputsConfig {
+  bool map = false;
+  bool video = false;
+  bool report = false;
+  double cloud_voxel_m = 0.01;
+  double octree_resolution_m = 0.05;
+  double max_depth_m = 4.0;
+  int keyframe_downscale = 2;
+  double map_frame_interval_s = 0.5;
+  int cloud_pixel_step = 1;
+  int octree_pixel_step = 6;
+  int mask_dilation_px = 5;
+  double walk_min_height_m = 0.3;
+  double walk_max_height_m = 1.8;
+  double grid_cell_m = 0.05;
+  template <class V>
+  void visit(V&& v) {
+    v("map", map,
+      "write map.ply (dense static cloud), map.bt (OctoMap), occupancy.png and topview.png "
+      "(--map)");
+    v("video", video, "write annotated.mp4 (or annotated.avi when no H.264 encoder) (--video)");
+    v("report", report, "write report.html: accuracy, timing, speeds, messages (--report)");
+    v("cloud_voxel_m", cloud_voxel_m, "voxel size of map.ply's downsampling (m)");
+    v("octree_resolution_m", octree_resolution_m, "OctoMap leaf size of map.bt (m)");
+    v("max_depth_m", max_depth_m,
+      "depth beyond this is not mapped (Kinect depth noise grows with the square of range)");
+    v("keyframe_downscale", keyframe_downscale,
+      "keyframe images are kept at 1/k resolution until the end of the run (bounds memory)");
+    v("map_frame_interval_s", map_frame_interval_s,
+      "besides keyframes, keep a frame for the map when this long has passed since the last kept "
+      "one (a wearer standing still makes no keyframes, yet the scene may change); 0 = keyframes "
+      "only");
+    v("cloud_pixel_step", cloud_pixel_step,
+      "map.ply takes every k-th pixel (rows and columns) of the kept keyframe images");
+    v("octree_pixel_step", octree_pixel_step,
+      "map.bt casts a ray for every k-th pixel of the kept images (ray casting dominates the "
+      "cost)");
+    v("mask_dilation_px", mask_dilation_px,
+      "dynamic instances' masks grow by this many full-resolution pixels before removal (mask "
+      "edges lag the body)");
+    v("walk_min_height_m", walk_min_height_m, "occupancy grid: lowest obstacle height above floor");
+    v("walk_max_height_m", walk_max_height_m,
+      "occupancy grid: highest obstacle height above floor");
+    v("grid_cell_m", grid_cell_m, "occupancy grid cell size (m)");
+  }
+};
+
+}  // namespace dynanav
