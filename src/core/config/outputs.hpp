@@ -3,6 +3,8 @@
 // optional products of a run (issue 15): static map, annotated video, top view, run report.
 // To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
 
+#include "core/config/range.hpp"
+
 namespace dynanav {
 
 /// Static maps (mapping/) and visual outputs (viz/) written at the end of `dynanav run`.
@@ -28,28 +30,37 @@ struct OutputsConfig {
       "(--map)");
     v("video", video, "write annotated.mp4 (or annotated.avi when no H.264 encoder) (--video)");
     v("report", report, "write report.html: accuracy, timing, speeds, messages (--report)");
-    v("cloud_voxel_m", cloud_voxel_m, "voxel size of map.ply's downsampling (m)");
-    v("octree_resolution_m", octree_resolution_m, "OctoMap leaf size of map.bt (m)");
+    v("cloud_voxel_m", cloud_voxel_m, "voxel size of map.ply's downsampling (m)",
+      Range{0, 1, Range::kOpenLow});
+    v("octree_resolution_m", octree_resolution_m, "OctoMap leaf size of map.bt (m)",
+      Range{0, 1, Range::kOpenLow});
     v("max_depth_m", max_depth_m,
-      "depth beyond this is not mapped (Kinect depth noise grows with the square of range)");
+      "depth beyond this is not mapped (Kinect depth noise grows with the square of range)",
+      Range{0, 100, Range::kOpenLow});
     v("keyframe_downscale", keyframe_downscale,
-      "keyframe images are kept at 1/k resolution until the end of the run (bounds memory)");
+      "keyframe images are kept at 1/k resolution until the end of the run (bounds memory)",
+      Range{1, 16});
     v("map_frame_interval_s", map_frame_interval_s,
       "besides keyframes, keep a frame for the map when this long has passed since the last kept "
       "one (a wearer standing still makes no keyframes, yet the scene may change); 0 = keyframes "
-      "only");
+      "only",
+      Range{0, 3600});
     v("cloud_pixel_step", cloud_pixel_step,
-      "map.ply takes every k-th pixel (rows and columns) of the kept keyframe images");
+      "map.ply takes every k-th pixel (rows and columns) of the kept keyframe images",
+      Range{1, 64});
     v("octree_pixel_step", octree_pixel_step,
       "map.bt casts a ray for every k-th pixel of the kept images (ray casting dominates the "
-      "cost)");
+      "cost)",
+      Range{1, 64});
     v("mask_dilation_px", mask_dilation_px,
       "dynamic instances' masks grow by this many full-resolution pixels before removal (mask "
-      "edges lag the body)");
-    v("walk_min_height_m", walk_min_height_m, "occupancy grid: lowest obstacle height above floor");
-    v("walk_max_height_m", walk_max_height_m,
-      "occupancy grid: highest obstacle height above floor");
-    v("grid_cell_m", grid_cell_m, "occupancy grid cell size (m)");
+      "edges lag the body)",
+      Range{0, 200});
+    v("walk_min_height_m", walk_min_height_m, "occupancy grid: lowest obstacle height above floor",
+      Range{-10, 10});
+    v("walk_max_height_m", walk_max_height_m, "occupancy grid: highest obstacle height above floor",
+      Range{-10, 10});
+    v("grid_cell_m", grid_cell_m, "occupancy grid cell size (m)", Range{0, 1, Range::kOpenLow});
   }
 };
 
