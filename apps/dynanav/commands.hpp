@@ -25,14 +25,14 @@ inline CLI::Validator finiteRange(double lo, double hi) {
       "NUMBER in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]");
 }
 
-void registerRun(CLI::App& root, Action& chosen);         // cmd_run.cpp
-void registerEval(CLI::App& root, Action& chosen);        // cmd_eval.cpp
-void registerEvalMasks(CLI::App& root, Action& chosen);   // cmd_eval_masks.cpp
-void registerEvalObjects(CLI::App& root, Action& chosen); // cmd_eval_objects.cpp
-void registerSimulate(CLI::App& root, Action& chosen);    // cmd_simulate.cpp
-void registerSegment(CLI::App& root, Action& chosen);     // cmd_segment.cpp
-void registerVocabulary(CLI::App& root, Action& chosen);  // cmd_vocabulary.cpp
-void registerRenderMap(CLI::App& root, Action& chosen);   // cmd_render_map.cpp
-void registerVideoFrame(CLI::App& root, Action& chosen);  // cmd_video_frame.cpp
+void registerRun(CLI::App& root, Action& chosen);          // cmd_run.cpp
+void registerEval(CLI::App& root, Action& chosen);         // cmd_eval.cpp
+void registerEvalMasks(CLI::App& root, Action& chosen);    // cmd_eval_masks.cpp
+void registerEvalObjects(CLI::App& root, Action& chosen);  // cmd_eval_objects.cpp
+void registerSimulate(CLI::App& root, Action& chosen);     // cmd_simulate.cpp
+void registerSegment(CLI::App& root, Action& chosen);      // cmd_segment.cpp
+void registerVocabulary(CLI::App& root, Action& chosen);   // cmd_vocabulary.cpp
+void registerRenderMap(CLI::App& root, Action& chosen);    // cmd_render_map.cpp
+void registerVideoFrame(CLI::App& root, Action& chosen);   // cmd_video_frame.cpp
 
 }  // namespace dynanav::cli

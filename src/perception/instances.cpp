@@ -19,7 +19,9 @@ cv::Mat Instances::mask(uint16_t id) const {
   return m;
 }
 
-int Instances::area(uint16_t id) const { return cv::countNonZero(mask(id)); }
+int Instances::area(uint16_t id) const {
+  return cv::countNonZero(mask(id));
+}
 
 int Instances::count(const std::string& class_name) const {
   return int(std::count_if(items.begin(), items.end(),

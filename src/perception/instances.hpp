@@ -31,11 +31,11 @@ struct BodyKeypoints {
 };
 
 struct Instance {
-  uint16_t id = 0;               ///< label value in Instances::labels
-  std::string class_name;        ///< COCO name ("person", "chair", ...)
-  float score = 1.f;             ///< detector confidence (1 for ground-truth masks)
-  cv::Rect box;                  ///< detector box clipped to the image (or the mask's bounds)
-  std::string mask_source;       ///< how the mask was made: "selfie", "depth", "file", "flow"
+  uint16_t id = 0;          ///< label value in Instances::labels
+  std::string class_name;   ///< COCO name ("person", "chair", ...)
+  float score = 1.f;        ///< detector confidence (1 for ground-truth masks)
+  cv::Rect box;             ///< detector box clipped to the image (or the mask's bounds)
+  std::string mask_source;  ///< how the mask was made: "selfie", "depth", "file", "flow"
   std::optional<BodyKeypoints> keypoints;  ///< persons only, when the keypoint model ran
 };
 

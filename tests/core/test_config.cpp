@@ -62,17 +62,23 @@ TEST(Config, DefaultsAreInsideTheirRanges) {
 }
 
 TEST(Config, RejectsOutOfRangeNamingFileAndKey) {
-  const std::vector<std::string> bad = {
-      "orb:\n  n_features: 0\n",          "orb:\n  n_features: 100000000\n",
-      "orb:\n  scale_factor: 1.0\n",      "orb:\n  scale_factor: .nan\n",
-      "orb:\n  n_levels: -3\n",           "tracking:\n  depth_max_m: .inf\n",
-      "tracking:\n  local_nn_ratio: 0\n", "mapping:\n  ba_linear_solver: cholesky\n",
-      "run:\n  segment_every: 0\n",       "run:\n  segmenter: magic\n",
-      "io:\n  max_association_dt_s: -1\n", "perception:\n  flow_scale: 2\n",
-      "dynamics:\n  sample_step_px: 0\n", "loop:\n  loop_min_ransac_inliers: 2\n"};
+  const std::vector<std::string> bad = {"orb:\n  n_features: 0\n",
+                                        "orb:\n  n_features: 100000000\n",
+                                        "orb:\n  scale_factor: 1.0\n",
+                                        "orb:\n  scale_factor: .nan\n",
+                                        "orb:\n  n_levels: -3\n",
+                                        "tracking:\n  depth_max_m: .inf\n",
+                                        "tracking:\n  local_nn_ratio: 0\n",
+                                        "mapping:\n  ba_linear_solver: cholesky\n",
+                                        "run:\n  segment_every: 0\n",
+                                        "run:\n  segmenter: magic\n",
+                                        "io:\n  max_association_dt_s: -1\n",
+                                        "perception:\n  flow_scale: 2\n",
+                                        "dynamics:\n  sample_step_px: 0\n",
+                                        "loop:\n  loop_min_ransac_inliers: 2\n"};
   for (const auto& yaml : bad) {
-    const std::string key = yaml.substr(yaml.find("  ") + 2, yaml.find(':', yaml.find("  ")) -
-                                                                  yaml.find("  ") - 2);
+    const std::string key =
+        yaml.substr(yaml.find("  ") + 2, yaml.find(':', yaml.find("  ")) - yaml.find("  ") - 2);
     try {
       Config::parse(yaml, "bad.yaml");
       ADD_FAILURE() << "accepted: " << yaml;

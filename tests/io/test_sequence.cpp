@@ -73,15 +73,19 @@ TEST(Sequence, ReadsCrlfCommentsAndBlankLines) {
 TEST(Sequence, RejectsUnsortedDuplicateAndMalformedLines) {
   const fs::path dir = test::scratchDir("lists");
   writeText(dir / "a.txt", "1.0 a.png\n0.5 b.png\n");
-  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "a.txt"); }).find("a.txt:2"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "a.txt"); }).find("a.txt:2"),
+            std::string::npos);
   writeText(dir / "b.txt", "1.0 a.png\n1.0 b.png\n");
-  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "b.txt"); }).find("duplicate"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "b.txt"); }).find("duplicate"),
+            std::string::npos);
   writeText(dir / "c.txt", "# header\nabc a.png\n");
-  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "c.txt"); }).find("c.txt:2"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "c.txt"); }).find("c.txt:2"),
+            std::string::npos);
   writeText(dir / "d.txt", "1.0 a.png extra\n");
   EXPECT_FALSE(errorOf([&] { readStampedFileList(dir / "d.txt"); }).empty());
   writeText(dir / "e.txt", "# only comments\n\n");
-  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "e.txt"); }).find("no images"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readStampedFileList(dir / "e.txt"); }).find("no images"),
+            std::string::npos);
   writeText(dir / "f.txt", "nan a.png\n");
   EXPECT_FALSE(errorOf([&] { readStampedFileList(dir / "f.txt"); }).empty());
 }
@@ -101,7 +105,8 @@ TEST(Sequence, AssociationIsGreedyBySmallestGap) {
 TEST(Sequence, MissingDepthListNamesIt) {
   const fs::path dir = makeSequence("nodepth", 2);
   fs::remove(dir / "depth.txt");
-  EXPECT_NE(errorOf([&] { TumSequence::open(dir, IoConfig{}); }).find("depth.txt"), std::string::npos);
+  EXPECT_NE(errorOf([&] { TumSequence::open(dir, IoConfig{}); }).find("depth.txt"),
+            std::string::npos);
 }
 
 TEST(Sequence, BadImagesNameTheFile) {
@@ -109,12 +114,15 @@ TEST(Sequence, BadImagesNameTheFile) {
   const auto seq = TumSequence::open(dir, IoConfig{});
   // Corrupt colour image.
   writeText(dir / seq.pairs()[0].rgb.relative_path, "not a png");
-  EXPECT_NE(errorOf([&] { (void)seq.load(0); }).find(seq.pairs()[0].rgb.relative_path), std::string::npos);
+  EXPECT_NE(errorOf([&] { (void)seq.load(0); }).find(seq.pairs()[0].rgb.relative_path),
+            std::string::npos);
   // Depth of the wrong type.
-  cv::imwrite((dir / seq.pairs()[1].depth.relative_path).string(), cv::Mat(48, 64, CV_8UC3, cv::Scalar(1)));
+  cv::imwrite((dir / seq.pairs()[1].depth.relative_path).string(),
+              cv::Mat(48, 64, CV_8UC3, cv::Scalar(1)));
   EXPECT_NE(errorOf([&] { (void)seq.load(1); }).find("16-bit"), std::string::npos);
   // Depth of the wrong size.
-  cv::imwrite((dir / seq.pairs()[2].depth.relative_path).string(), cv::Mat(10, 10, CV_16UC1, cv::Scalar(1)));
+  cv::imwrite((dir / seq.pairs()[2].depth.relative_path).string(),
+              cv::Mat(10, 10, CV_16UC1, cv::Scalar(1)));
   EXPECT_NE(errorOf([&] { (void)seq.load(2); }).find("10x10"), std::string::npos);
   // Missing depth image.
   fs::remove(dir / seq.pairs()[2].depth.relative_path);
@@ -132,7 +140,8 @@ TEST(Sequence, CameraFromFolderNameOrError) {
   fs::create_directories(other);
   writeText(other / "rgb.txt", "1.0 rgb/a.png\n");
   writeText(other / "depth.txt", "1.0 depth/a.png\n");
-  EXPECT_NE(errorOf([&] { TumSequence::open(other, IoConfig{}); }).find("camera"), std::string::npos);
+  EXPECT_NE(errorOf([&] { TumSequence::open(other, IoConfig{}); }).find("camera"),
+            std::string::npos);
   EXPECT_EQ(TumSequence::open(other, IoConfig{}, PinholeCamera{}).cameraSource(), "config");
 }
 
@@ -146,9 +155,11 @@ TEST(CameraYaml, RoundTripAndErrors) {
   EXPECT_NEAR(back.readout_s, 0.025, 1e-12);  // fr1's rolling shutter survives the round trip
   writeText(dir / "no_readout.yaml", "width: 640\nheight: 480\nfx: 5\nfy: 5\ncx: 1\ncy: 1\n");
   EXPECT_EQ(loadCameraYaml(dir / "no_readout.yaml").readout_s, 0.0);  // global shutter by default
-  writeText(dir / "neg_readout.yaml",
-            "width: 640\nheight: 480\nfx: 5\nfy: 5\ncx: 1\ncy: 1\nrolling_shutter_readout_ms: -3\n");
-  EXPECT_NE(errorOf([&] { loadCameraYaml(dir / "neg_readout.yaml"); }).find("readout"), std::string::npos);
+  writeText(
+      dir / "neg_readout.yaml",
+      "width: 640\nheight: 480\nfx: 5\nfy: 5\ncx: 1\ncy: 1\nrolling_shutter_readout_ms: -3\n");
+  EXPECT_NE(errorOf([&] { loadCameraYaml(dir / "neg_readout.yaml"); }).find("readout"),
+            std::string::npos);
   writeText(dir / "bad.yaml", "width: 640\nheight: 480\nfx: 500\n");
   EXPECT_NE(errorOf([&] { loadCameraYaml(dir / "bad.yaml"); }).find("'fy'"), std::string::npos);
   writeText(dir / "neg.yaml", "width: 640\nheight: 480\nfx: -5\nfy: 5\ncx: 1\ncy: 1\n");

@@ -8,7 +8,7 @@
 #include "core/config/mapping.hpp"
 #include "core/config/objects.hpp"
 #include "core/config/orb.hpp"
+#include "core/config/outputs.hpp"
 #include "core/config/perception.hpp"
 #include "core/config/run.hpp"
-#include "core/config/outputs.hpp"
 #include "core/config/tracking.hpp"

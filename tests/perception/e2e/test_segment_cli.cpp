@@ -57,13 +57,18 @@ TEST(SegmentCli, MasksSegmenterRoundTripsLabelsVideoAndStats) {
   const fs::path out = test::scratchDir("segout");
   std::string log;
   ASSERT_EQ(test::runCli("segment " + seq.string() + " --out " + out.string() +
-                             " --segmenter masks --contact-sheets", &log), 0) << log;
+                             " --segmenter masks --contact-sheets",
+                         &log),
+            0)
+      << log;
   ASSERT_TRUE(fs::is_regular_file(out / "masks.json")) << log;
-  EXPECT_TRUE(fs::is_regular_file(out / "overlay.mp4") || fs::is_regular_file(out / "overlay.avi")) << log;
+  EXPECT_TRUE(fs::is_regular_file(out / "overlay.mp4") || fs::is_regular_file(out / "overlay.avi"))
+      << log;
   EXPECT_TRUE(fs::is_regular_file(out / "contact" / "sheet_0000.png"));
   for (const auto& entry : fs::directory_iterator(seq / "masks")) {
     const cv::Mat expected = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
-    const cv::Mat got = cv::imread((out / "masks" / entry.path().filename()).string(), cv::IMREAD_UNCHANGED);
+    const cv::Mat got =
+        cv::imread((out / "masks" / entry.path().filename()).string(), cv::IMREAD_UNCHANGED);
     ASSERT_FALSE(got.empty()) << entry.path().filename();
     EXPECT_EQ(got.type(), CV_16U);
     EXPECT_EQ(cv::countNonZero(got != expected), 0) << entry.path().filename();
@@ -80,7 +85,10 @@ TEST(SegmentCli, PropagationBetweenSegmentedFramesKeepsThePerson) {
   const fs::path out = test::scratchDir("segprop");
   std::string log;
   ASSERT_EQ(test::runCli("segment " + seq.string() + " --out " + out.string() +
-                             " --segmenter masks --segment-every 3 --no-video --max-frames 5", &log), 0) << log;
+                             " --segmenter masks --segment-every 3 --no-video --max-frames 5",
+                         &log),
+            0)
+      << log;
   const auto stats = readJsonFile(out / "stats.json");
   EXPECT_EQ(stats["segmenter"], "masks/every3");
   EXPECT_EQ(stats["frames"], 5);
@@ -89,8 +97,10 @@ TEST(SegmentCli, PropagationBetweenSegmentedFramesKeepsThePerson) {
   EXPECT_FALSE(fs::exists(out / "overlay.mp4") || fs::exists(out / "overlay.avi"));
   // The propagated person overlaps its ground truth well (moved 3 px right per frame).
   const std::string stem = "100.13";
-  const cv::Mat gt = cv::imread((seq / "masks" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED) > 0;
-  const cv::Mat got = cv::imread((out / "masks" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED) > 0;
+  const cv::Mat gt =
+      cv::imread((seq / "masks" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED) > 0;
+  const cv::Mat got =
+      cv::imread((out / "masks" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED) > 0;
   const double iou = double(cv::countNonZero(gt & got)) / double(cv::countNonZero(gt | got));
   EXPECT_GT(iou, 0.8);
 }
@@ -100,12 +110,18 @@ TEST(SegmentCli, BadInputGivesExitCode2AndNamesTheProblem) {
   const fs::path out = test::scratchDir("segbad");
   std::string log;
   EXPECT_EQ(test::runCli("segment " + seq.string() + " --out " + out.string() +
-                             " --segmenter dnn --models " + out.string(), &log), 2);
+                             " --segmenter dnn --models " + out.string(),
+                         &log),
+            2);
   EXPECT_NE(log.find("yolo-fastest-1.1-xl.cfg"), std::string::npos) << log;
   fs::remove_all(seq / "masks");
-  EXPECT_EQ(test::runCli("segment " + seq.string() + " --out " + out.string() + " --segmenter masks", &log), 2);
+  EXPECT_EQ(test::runCli(
+                "segment " + seq.string() + " --out " + out.string() + " --segmenter masks", &log),
+            2);
   EXPECT_NE(log.find("masks"), std::string::npos) << log;
-  EXPECT_EQ(test::runCli("segment " + seq.string() + " --out " + out.string() + " --segmenter magic", &log), 2);
+  EXPECT_EQ(test::runCli(
+                "segment " + seq.string() + " --out " + out.string() + " --segmenter magic", &log),
+            2);
   EXPECT_EQ(test::runCli("segment " + (seq / "nope").string() + " --out " + out.string(), &log), 2);
 }
 

@@ -19,7 +19,8 @@ TEST(RunFr1Xyz, TracksEveryFrameAccurately) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const fs::path out = test::scratchDir("run_fr1_xyz");
   std::string log;
-  const int code = test::runCli("run " + seq.string() + " --out " + out.string() + " --dynamic off --quiet", &log);
+  const int code = test::runCli(
+      "run " + seq.string() + " --out " + out.string() + " --dynamic off --quiet", &log);
   ASSERT_EQ(code, 0) << log;
   for (const char* name : {"trajectory.txt", "keyframes.txt", "stats.json", "config_used.yaml"})
     EXPECT_TRUE(fs::exists(out / name)) << name;
@@ -53,7 +54,8 @@ TEST(RunFr1Xyz, RollingShutterRetimingIsWhatMakesItAccurate) {
             0)
       << log;
   EXPECT_GT(ateRmse(seq / "groundtruth.txt", out / "trajectory.txt"), 0.0095);
-  EXPECT_NE(test::readFile(out / "config_used.yaml").find("rolling_shutter_readout_ms: 0"), std::string::npos);
+  EXPECT_NE(test::readFile(out / "config_used.yaml").find("rolling_shutter_readout_ms: 0"),
+            std::string::npos);
 }
 
 TEST(RunFr1Xyz, DeterministicModeIsBitIdentical) {
@@ -86,7 +88,10 @@ TEST(RunFr1Xyz, ThreadedModeTracksEveryFrame) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const fs::path out = test::scratchDir("run_fr1_xyz_realtime");
   std::string log;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --realtime --unpaced --dynamic off --quiet", &log), 0)
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() +
+                             " --realtime --unpaced --dynamic off --quiet",
+                         &log),
+            0)
       << log;
   const auto stats = readJsonFile(out / "stats.json");
   EXPECT_EQ(stats["tracked"], 244);
@@ -119,7 +124,10 @@ TEST(RunFr1Xyz, NeverInitialisedExitsWithThree) {
   DYNANAV_REQUIRE_SEQUENCE(seq, "rgbd_dataset_freiburg1_xyz");
   const std::filesystem::path out = test::scratchDir("run_never_init");
   std::string log;
-  EXPECT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() + " --blackout 0:9 --max-frames 10 --dynamic off --quiet", &log), 3)
+  EXPECT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() +
+                             " --blackout 0:9 --max-frames 10 --dynamic off --quiet",
+                         &log),
+            3)
       << log;
 }
 }  // namespace
