@@ -121,7 +121,7 @@ TEST(RunOutputs, EarlierRunsFilesAreReplacedNotMixed) {
     EXPECT_EQ(test::readFile(entry.path()).find("from an earlier run"), std::string::npos)
         << entry.path();
   }
-  EXPECT_FALSE(fs::exists(out / "objects.jsonl"));  // this run writes none
+  EXPECT_FALSE(fs::exists(out / "events.jsonl"));  // this run writes none (no feedback stage yet)
   EXPECT_EQ(test::readFile(out / "notes.txt"), "mine\n");
 }
 

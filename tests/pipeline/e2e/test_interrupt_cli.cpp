@@ -11,6 +11,8 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 #include "support/test_support.hpp"
 
 extern char** environ;
@@ -62,7 +64,8 @@ void expectWellFormedOutputs(const fs::path& out, int max_frames) {
 class InterruptCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = test::scratchDir("interrupt_cli");
+    dir_ = test::scratchDir("interrupt_cli_" +
+                            std::to_string(getpid()));  // one per test process (ctest -j)
     std::string log;
     ASSERT_EQ(test::runCli("simulate --scenario office --out " + (dir_ / "seq").string() +
                                " --frames 240 --seed 3",

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
 #include "support/test_support.hpp"
 
 namespace dynanav {
@@ -15,7 +17,8 @@ namespace fs = std::filesystem;
 class RealtimeCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = test::scratchDir("realtime_cli");
+    dir_ = test::scratchDir("realtime_cli_" +
+                            std::to_string(getpid()));  // one per test process (ctest -j)
     std::string log;
     ASSERT_EQ(test::runCli("simulate --scenario office --out " + (dir_ / "seq").string() +
                                " --frames 60 --seed 1",
