@@ -15,14 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(ModelFileCheck, EmptyOrWrongChecksumIsRefused) {
   const fs::path dir = test::scratchDir("model_check");

@@ -1,14 +1,16 @@
 #include "support/test_support.hpp"
 
+#include "core/error.hpp"
+
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 
@@ -65,6 +67,15 @@ double ateRmse(const fs::path& gt, const fs::path& est) {
   const auto begin = out.find('{');
   if (code != 0 || begin == std::string::npos) return 1e9;
   return nlohmann::json::parse(out.substr(begin))["ate_m"]["rmse"].get<double>();
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::string readFile(const fs::path& path) {

@@ -1,6 +1,7 @@
 #pragma once
 // Shared test helpers: locating ../shared, scratch folders, running the CLI.
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace dynanav::test {
@@ -18,12 +19,14 @@ int runCli(const std::string& args, std::string* output = nullptr);
 /// ATE RMSE (m) of `est` against `gt` as the project's own `dynanav eval --json` computes it;
 /// a failed evaluation is reported as a test failure and returns 1e9.
 double ateRmse(const std::filesystem::path& gt, const std::filesystem::path& est);
+/// The message of the InputError `f` throws ("" when it throws none).
+std::string errorOf(const std::function<void()>& f);
 /// Whole file as a string ("" if missing).
 std::string readFile(const std::filesystem::path& path);
 
 }  // namespace dynanav::test
 
 /// Skip the current test with a message when a shared sequence is absent.
-#define DYNANAV_REQUIRE_SEQUENCE(var, name)                                              \
-  const auto var = ::dynanav::test::sharedSequence(name);                                \
+#define DYNANAV_REQUIRE_SEQUENCE(var, name)               \
+  const auto var = ::dynanav::test::sharedSequence(name); \
   if (var.empty()) GTEST_SKIP() << "../shared/data/" << name << " not found: skipped"
