@@ -3,7 +3,9 @@
 #include <opencv2/imgproc.hpp>
 
 namespace dynanav {
+namespace {
 
+/// Grey image of `frame` (BGR or already grey) and, when `with_half`, its half-size copy.
 PreparedFrame prepareFrame(const RgbdFrame& frame, bool with_half) {
   PreparedFrame out;
   if (frame.bgr.channels() == 3)
@@ -13,6 +15,8 @@ PreparedFrame prepareFrame(const RgbdFrame& frame, bool with_half) {
   if (with_half) cv::resize(out.grey, out.grey_half, cv::Size(), 0.5, 0.5, cv::INTER_AREA);
   return out;
 }
+
+}  // namespace
 
 PreparedFrame FramePrep::prepare(const RgbdFrame& frame) {
   PreparedFrame out = prepareFrame(frame, needs_.half || needs_.flow);

@@ -18,9 +18,6 @@ struct PreparedFrame {
   cv::Mat flow_half;
 };
 
-/// Grey image of `frame` (BGR or already grey) and, when `with_half`, its half-size copy.
-PreparedFrame prepareFrame(const RgbdFrame& frame, bool with_half);
-
 /// Prepares frames in sequence order, remembering the previous one for the flow.
 class FramePrep {
  public:
