@@ -101,6 +101,14 @@ Config Config::parse(const std::string& yaml_text, const std::string& source) {
   } catch (const YAML::Exception& e) {
     throw ConfigError(source, std::string("not valid YAML: ") + e.what());
   }
+  try {
+    return parseSections(root, source);
+  } catch (const YAML::Exception& e) {  // e.g. a map used as a key (a fuzz finding)
+    throw ConfigError(source, std::string("malformed YAML structure: ") + e.what());
+  }
+}
+
+Config Config::parseSections(const YAML::Node& root, const std::string& source) {
   Config config;
   if (!root || root.IsNull()) return config;
   if (!root.IsMap()) throw ConfigError(source, "top level must be a map of sections");

@@ -5,6 +5,10 @@
 #include "core/config/range.hpp"
 #include "core/config/sections.hpp"
 
+namespace YAML {
+class Node;
+}
+
 namespace dynanav {
 
 struct Config {
@@ -38,6 +42,8 @@ struct Config {
   static Config load(const std::string& yaml_path);
   /// Same, from YAML text (`source` names it in errors).
   static Config parse(const std::string& yaml_text, const std::string& source = "<yaml>");
+  /// parse() after YAML::Load: the sections of a loaded document (YAML errors escape).
+  static Config parseSections(const YAML::Node& root, const std::string& source);
   /// Throws ConfigError naming `source` and the key when a value is outside its documented
   /// range (each section's visit() gives it; NaN and infinity are never in range). parse()
   /// checks what it reads; call this again after command-line flags changed values.

@@ -107,3 +107,10 @@ TEST(Config, EchoShowsTheRange) {
             std::string::npos);
   EXPECT_NE(yaml.find("(valid: auto | dnn | hog | masks | none)"), std::string::npos);
 }
+
+// A fuzz finding: a map used as a key made yaml-cpp throw past the loader (std::terminate).
+TEST(ConfigFuzzFinding, MapAsKeyIsAConfigError) {
+  EXPECT_THROW(dynanav::Config::parse("orb:\n ? n_fea: 67\n run:\n", "fuzz.yaml"),
+               dynanav::ConfigError);
+  EXPECT_THROW(dynanav::Config::parse("? {a: 1}\n: 2\n", "fuzz.yaml"), dynanav::ConfigError);
+}
