@@ -12,7 +12,7 @@ AsyncSegmenter::AsyncSegmenter(std::unique_ptr<Segmenter> inner, const Perceptio
     : inner_(std::move(inner)),
       timers_(timers),
       nice_(config.segmenter_nice),
-      propagator_(config),
+      carrier_(config, config.carry_history_frames),
       worker_([this] { work(); }) {}
 
 AsyncSegmenter::~AsyncSegmenter() {
@@ -76,7 +76,7 @@ Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
       if (timers_) timer.emplace(*timers_, "segmenter_thread");
       first = inner_->segment(frame);
     }
-    propagator_.setReference(frame, first);
+    carrier_.reset(frame, first);
     return first;
   }
   std::optional<Result> result;
@@ -92,17 +92,10 @@ Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
     pending_ = std::move(copy);
   }
   wake_.notify_one();
-  timing_.clear();
-  if (result) {
-    if (result->frame.index == frame.index) {
-      propagator_.setReference(frame, result->instances);
-      return result->instances;
-    }
-    propagator_.setReference(result->frame, result->instances);
-  }
-  if (!propagator_.hasReference()) return Instances::none(frame.bgr.size());
-  Instances carried = propagator_.propagate(frame);
-  const PropagationTiming& t = propagator_.lastTiming();
+  if (!carrier_.hasReference()) return Instances::none(frame.bgr.size());
+  Instances carried =
+      result ? carrier_.carry(frame, &result->instances, &result->frame) : carrier_.carry(frame);
+  const PropagationTiming& t = carrier_.lastTiming();
   timing_ = {{"propagation", t.flow_ms + t.warp_ms + t.depth_ms}, {"propagation_flow", t.flow_ms}};
   return carried;
 }

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "core/timer.hpp"
-#include "perception/propagation.hpp"
+#include "perception/mask_carrier.hpp"
 
 namespace dynanav {
 
@@ -44,7 +44,7 @@ class AsyncSegmenter final : public Segmenter {
   std::unique_ptr<Segmenter> inner_;
   StageTimers* timers_;
   int nice_;
-  MaskPropagator propagator_;             // used by the caller's thread only
+  MaskCarrier carrier_;                   // used by the caller's thread only
   std::map<std::string, double> timing_;  // the caller's last propagation
   bool started_ = false;                  // the first frame was segmented in the caller's thread
   mutable std::mutex mutex_;

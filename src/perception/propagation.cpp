@@ -11,25 +11,106 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
+void growWithinDepth(cv::Mat& labels, const cv::Mat& depth_m, uint16_t id, int grow_px,
+                     double bin_m, double band_m) {
+  const cv::Rect all(0, 0, labels.cols, labels.rows);
+  const cv::Mat own = labels == id;
+  const cv::Rect box = cv::boundingRect(own);
+  if (box.area() == 0) return;
+  const cv::Rect grown = cv::Rect(box.x - grow_px, box.y - grow_px, box.width + 2 * grow_px,
+                                  box.height + 2 * grow_px) &
+                         all;
+  cv::Mat region = own(grown);
+  const float mode = depthMode(depth_m(grown), region, bin_m);
+  if (mode <= 0.f) return;
+  cv::Mat reach;
+  cv::dilate(region, reach,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * grow_px + 1, 2 * grow_px + 1}));
+  cv::Mat roi = labels(grown);
+  const cv::Mat z = depth_m(grown);
+  const float band = float(band_m);
+  for (int y = 0; y < roi.rows; ++y) {
+    auto* l = roi.ptr<uint16_t>(y);
+    const uchar* r = reach.ptr<uchar>(y);
+    const uchar* o = region.ptr<uchar>(y);
+    const float* d = z.ptr<float>(y);
+    for (int x = 0; x < roi.cols; ++x) {
+      const bool near = validDepth(d[x]) && std::abs(d[x] - mode) <= band;
+      if (o[x] && validDepth(d[x]) && !near)
+        l[x] = 0;  // flow put it on the background
+      else if (!o[x] && r[x] && l[x] == 0 && near)
+        l[x] = id;  // the part flow left behind
+    }
+  }
+}
+
+Instances warpInstances(const Instances& reference, const cv::Mat& flow_small,
+                        const RgbdFrame& frame, const PerceptionConfig& config,
+                        WarpBuffers& buffers, PropagationTiming& timing, int grow_px) {
+  auto t0 = Clock::now();
+  cv::Mat& flow = buffers.flow;
+  cv::Mat& map = buffers.map;
+  cv::resize(flow_small, flow, frame.bgr.size(), 0, 0, cv::INTER_LINEAR);
+  const float to_full = float(frame.bgr.cols) / float(flow_small.cols);
+  map.create(flow.size(), CV_32FC2);
+  for (int y = 0; y < map.rows; ++y) {
+    auto* m = map.ptr<cv::Vec2f>(y);
+    const auto* f = flow.ptr<cv::Vec2f>(y);
+    for (int x = 0; x < map.cols; ++x)
+      m[x] = {float(x) + to_full * f[x][0], float(y) + to_full * f[x][1]};
+  }
+  Instances out;
+  cv::remap(reference.labels, out.labels, map, cv::Mat(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+            cv::Scalar());
+  out.items = reference.items;
+  tightenToLabels(out);
+  timing.warp_ms = msSince(t0);
+
+  t0 = Clock::now();
+  for (Instance& item : out.items) {
+    item.mask_source = "flow";
+    const cv::Mat mask = out.labels(item.box) == item.id;
+    if (item.keypoints) {
+      // Keypoints move with the mean flow of their instance (pixel = source - flow).
+      const cv::Scalar mean_flow = cv::mean(flow(item.box), mask) * double(to_full);
+      for (Keypoint& k : item.keypoints->points)
+        k.pixel -= cv::Point2f(float(mean_flow[0]), float(mean_flow[1]));
+    }
+    if (frame.depth_m.empty()) continue;
+    if (grow_px > 0) {
+      growWithinDepth(out.labels, frame.depth_m, item.id, grow_px, config.depth_bin_m,
+                      config.propagation_depth_band_m);
+      continue;
+    }
+    cv::Mat kept = mask.clone();
+    refineMaskByDepth(kept, frame.depth_m(item.box), config.depth_bin_m,
+                      config.propagation_depth_band_m);
+    out.labels(item.box).setTo(cv::Scalar(0), mask & ~kept);
+  }
+  tightenToLabels(out);
+  timing.depth_ms = msSince(t0);
+  return out;
+}
+
 MaskPropagator::MaskPropagator(const PerceptionConfig& config)
     : config_(config), dis_(cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_FAST)) {}
 
-cv::Mat MaskPropagator::smallGrey(const cv::Mat& bgr) const {
+cv::Mat flowGrey(const cv::Mat& bgr, double scale) {
   cv::Mat grey, small;
   cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-  if (config_.flow_scale >= 1.0) return grey;
-  cv::resize(grey, small, cv::Size(), config_.flow_scale, config_.flow_scale, cv::INTER_AREA);
+  if (scale >= 1.0) return grey;
+  cv::resize(grey, small, cv::Size(), scale, scale, cv::INTER_AREA);
   return small;
 }
 
 void MaskPropagator::setReference(const RgbdFrame& frame, const Instances& instances) {
-  reference_grey_ = smallGrey(frame.bgr);
+  reference_grey_ = flowGrey(frame.bgr, config_.flow_scale);
   reference_ = instances;
 }
 
 Instances MaskPropagator::propagate(const RgbdFrame& frame) {
   auto t0 = Clock::now();
-  const cv::Mat grey = smallGrey(frame.bgr);
+  const cv::Mat grey = flowGrey(frame.bgr, config_.flow_scale);
   if (reference_grey_.empty() || grey.size() != reference_grey_.size() ||
       reference_.labels.size() != frame.bgr.size()) {
     setReference(frame, Instances::none(frame.bgr.size()));  // nothing to carry
@@ -39,39 +120,7 @@ Instances MaskPropagator::propagate(const RgbdFrame& frame) {
   dis_->calc(grey, reference_grey_, flow_small_);
   timing_.flow_ms = msSince(t0);
 
-  t0 = Clock::now();
-  cv::resize(flow_small_, flow_, frame.bgr.size(), 0, 0, cv::INTER_LINEAR);
-  const float to_full = float(frame.bgr.cols) / float(grey.cols);
-  map_.create(flow_.size(), CV_32FC2);
-  for (int y = 0; y < map_.rows; ++y) {
-    auto* m = map_.ptr<cv::Vec2f>(y);
-    const auto* f = flow_.ptr<cv::Vec2f>(y);
-    for (int x = 0; x < map_.cols; ++x) m[x] = {float(x) + to_full * f[x][0], float(y) + to_full * f[x][1]};
-  }
-  Instances out;
-  cv::remap(reference_.labels, out.labels, map_, cv::Mat(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar());
-  out.items = reference_.items;
-  tightenToLabels(out);
-  timing_.warp_ms = msSince(t0);
-
-  t0 = Clock::now();
-  for (Instance& item : out.items) {
-    item.mask_source = "flow";
-    const cv::Mat mask = out.labels(item.box) == item.id;
-    if (item.keypoints) {
-      // Keypoints move with the mean flow of their instance (pixel = source - flow).
-      const cv::Scalar mean_flow = cv::mean(flow_(item.box), mask) * double(to_full);
-      for (Keypoint& k : item.keypoints->points)
-        k.pixel -= cv::Point2f(float(mean_flow[0]), float(mean_flow[1]));
-    }
-    if (frame.depth_m.empty()) continue;
-    cv::Mat kept = mask.clone();
-    refineMaskByDepth(kept, frame.depth_m(item.box), config_.depth_bin_m, config_.propagation_depth_band_m);
-    out.labels(item.box).setTo(cv::Scalar(0), mask & ~kept);
-  }
-  tightenToLabels(out);
-  timing_.depth_ms = msSince(t0);
-
+  Instances out = warpInstances(reference_, flow_small_, frame, config_, buffers_, timing_);
   reference_grey_ = grey;
   reference_ = out;
   return out;

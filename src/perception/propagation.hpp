@@ -19,6 +19,29 @@ struct PropagationTiming {
   double depth_ms = 0.0;  ///< depth correction and boxes
 };
 
+/// The grey image DIS flow runs on: `bgr` in grey, scaled by `scale` (≥ 1: full size).
+cv::Mat flowGrey(const cv::Mat& bgr, double scale);
+
+/// Scratch images reused across frames: fresh multi-MB buffers cost page faults per frame.
+struct WarpBuffers {
+  cv::Mat flow;  ///< flow at full size
+  cv::Mat map;   ///< remap coordinates
+};
+
+/// `reference`'s labels pulled into `frame` along `flow_small` (where each pixel of `frame` came
+/// from in the reference, at a reduced scale), each instance then cut to the pixels near its
+/// depth mode in `frame`. `grow_px` > 0: each instance may also take the pixels up to that far
+/// from its carried mask that lie in its depth band (the part of a moving body the flow left
+/// behind). Fills timing.warp_ms and timing.depth_ms.
+Instances warpInstances(const Instances& reference, const cv::Mat& flow_small,
+                        const RgbdFrame& frame, const PerceptionConfig& config,
+                        WarpBuffers& buffers, PropagationTiming& timing, int grow_px = 0);
+
+/// Instance `id` in `labels` cut to its depth band and grown by up to `grow_px` into unlabelled
+/// pixels of that band (depth mode of the instance's own pixels, `bin_m` histogram bins).
+void growWithinDepth(cv::Mat& labels, const cv::Mat& depth_m, uint16_t id, int grow_px,
+                     double bin_m, double band_m);
+
 class MaskPropagator {
  public:
   explicit MaskPropagator(const PerceptionConfig& config);
@@ -30,12 +53,11 @@ class MaskPropagator {
   [[nodiscard]] const PropagationTiming& lastTiming() const { return timing_; }
 
  private:
-  cv::Mat smallGrey(const cv::Mat& bgr) const;
-
   PerceptionConfig config_;
   cv::Ptr<cv::DISOpticalFlow> dis_;
   cv::Mat reference_grey_;  // at config_.flow_scale
-  cv::Mat flow_small_, flow_, map_;  // reused: fresh multi-MB buffers cost page faults per frame
+  cv::Mat flow_small_;
+  WarpBuffers buffers_;
   Instances reference_;
   PropagationTiming timing_;
 };

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "perception/instance_memory.hpp"
+#include "perception/lagged_segmenter.hpp"
 #include "perception/mask_files.hpp"
 #include "perception/model_files.hpp"
 #include "perception/propagation.hpp"
@@ -78,6 +79,9 @@ std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request,
   if (config.mask_memory_frames > 0)
     segmenter = std::make_unique<RememberingSegmenter>(std::move(segmenter),
                                                        config.mask_memory_frames, config);
+  if (config.emulated_lag_frames > 0)
+    segmenter =
+        std::make_unique<LaggedSegmenter>(std::move(segmenter), config.emulated_lag_frames, config);
   return segmenter;
 }
 

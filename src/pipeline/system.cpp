@@ -23,7 +23,9 @@ System::System(const Config& config, const PinholeCamera& camera,
     request.name = config.run.segmenter;
     request.segment_every = std::max(1, config.run.segment_every);
     request.sequence_dir = sequence_dir;
-    segmenter_ = makeSegmenter(request, config.perception);
+    PerceptionConfig perception = config.perception;
+    if (config.run.realtime) perception.emulated_lag_frames = 0;  // the real lag replaces it
+    segmenter_ = makeSegmenter(request, perception);
     // Real time: the segmenter runs in its own thread on the newest frame; its masks are
     // carried to the current frame by optical flow.
     if (config.run.realtime && request.name != "none")

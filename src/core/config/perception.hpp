@@ -44,6 +44,9 @@ struct PerceptionConfig {
   double flow_scale = 0.5;
   double propagation_depth_band_m = 0.6;
   int mask_memory_frames = 2;
+  int carry_history_frames = 12;
+  int emulated_lag_frames = 0;
+  int carry_grow_px = 4;
 
   // Noise injection for the `masks` segmenter (robustness tests; all off by default).
   int mask_noise_grow_px = 0;
@@ -101,6 +104,20 @@ struct PerceptionConfig {
       "an instance the segmenter loses is carried by optical flow for up to this many frames (0 = "
       "off)",
       Range{0, 1000});
+    v("carry_history_frames", carry_history_frames,
+      "frame-to-frame flows kept to carry a late segmentation to the current frame by chaining "
+      "them (real time); a segmentation older than this is carried by one direct flow "
+      "(1: always direct)",
+      Range{1, 64});
+    v("carry_grow_px", carry_grow_px,
+      "a carried mask also takes pixels up to this far (px) from it that lie in its depth band: "
+      "the part of a moving body a late mask has not reached (0: off)",
+      Range{0, 100});
+    v("emulated_lag_frames", emulated_lag_frames,
+      "deterministic replay of real-time segmentation: frame s's masks are used from frame s+N "
+      "on, carried by flow, the next segmentation starting there (0: off; ignored with "
+      "--realtime)",
+      Range{0, 100});
     v("propagation_depth_band_m", propagation_depth_band_m,
       "propagated pixels farther than this from the instance's depth mode are dropped (m)",
       Range{0, 100, Range::kOpenLow});

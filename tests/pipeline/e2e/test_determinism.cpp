@@ -3,6 +3,7 @@
 // people walking (office) and an object pushed (pushed-box).
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.hpp"
@@ -12,8 +13,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void expectReproducible(const std::string& scenario) {
-  const fs::path dir = test::scratchDir("determinism_" + scenario);
+/// `extra`: more run flags (a config file).
+void expectReproducible(const std::string& scenario, const std::string& extra = "",
+                        const std::string& tag = "") {
+  const fs::path dir = test::scratchDir("determinism_" + scenario + tag);
   const fs::path seq = dir / "seq";
   std::string log;
   ASSERT_EQ(test::runCli("simulate --scenario " + scenario + " --out " + seq.string() +
@@ -23,7 +26,7 @@ void expectReproducible(const std::string& scenario) {
       << log;
   for (const char* run : {"a", "b"}) {
     ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + (dir / run).string() +
-                               " --segmenter masks --deterministic --quiet",
+                               " --segmenter masks --deterministic --quiet" + extra,
                            &log),
               0)
         << log;
@@ -48,6 +51,12 @@ TEST(Determinism, OfficeWithWalkersIsBitIdentical) {
 }
 TEST(Determinism, PushedBoxIsBitIdentical) {
   expectReproducible("pushed-box");
+}
+TEST(Determinism, LateMasksReplayIsBitIdentical) {
+  // The deterministic replay of real-time segmentation (masks 3 frames late, carried by flow).
+  const fs::path config = test::scratchDir("determinism_lag_config") / "lag.yaml";
+  std::ofstream(config) << "perception:\n  emulated_lag_frames: 3\n";
+  expectReproducible("office", " --config " + config.string(), "_lag3");
 }
 
 }  // namespace
