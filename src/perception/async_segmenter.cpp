@@ -49,6 +49,7 @@ void AsyncSegmenter::work() {
       std::optional<ScopedTimer> timer;
       if (timers_) timer.emplace(*timers_, "segmenter_thread");
       result.instances = inner_->segment(frame);
+      result.instances.segmented_index = frame.index;
       if (timers_)
         for (const auto& [step, ms] : inner_->lastTiming())
           timers_->add("segmenter_thread." + step, ms);
@@ -76,6 +77,7 @@ Instances AsyncSegmenter::segment(const RgbdFrame& frame) {
       if (timers_) timer.emplace(*timers_, "segmenter_thread");
       first = inner_->segment(frame);
     }
+    first.segmented_index = frame.index;
     carrier_.reset(frame, first);
     return first;
   }

@@ -42,6 +42,9 @@ struct Instance {
 struct Instances {
   cv::Mat labels;               ///< CV_16U, 0 = background
   std::vector<Instance> items;  ///< ordered by id
+  /// The frame this segmentation was made on (< 0: not recorded); masks carried by flow keep
+  /// it, so a late segmentation shows how late it is.
+  int segmented_index = -1;
 
   [[nodiscard]] bool empty() const { return items.empty(); }
   [[nodiscard]] const Instance* find(uint16_t id) const;

@@ -1,5 +1,7 @@
 #include "perception/lagged_segmenter.hpp"
 
+#include <algorithm>
+
 namespace dynanav {
 
 LaggedSegmenter::LaggedSegmenter(std::unique_ptr<Segmenter> inner, int lag_frames,
@@ -8,7 +10,15 @@ LaggedSegmenter::LaggedSegmenter(std::unique_ptr<Segmenter> inner, int lag_frame
       lag_frames_(std::max(0, lag_frames)),
       carrier_(config, config.carry_history_frames) {}
 
+LaggedSegmenter::LaggedSegmenter(std::unique_ptr<Segmenter> inner, std::map<int, int> arrivals,
+                                 const PerceptionConfig& config)
+    : inner_(std::move(inner)),
+      lag_frames_(0),
+      carrier_(config, config.carry_history_frames),
+      arrivals_(std::move(arrivals)) {}
+
 std::string LaggedSegmenter::name() const {
+  if (!arrivals_.empty()) return inner_->name() + "/replay";
   return inner_->name() + "/lag" + std::to_string(lag_frames_);
 }
 
@@ -18,20 +28,34 @@ Instances LaggedSegmenter::segment(const RgbdFrame& frame) {
     started_ = true;
     Instances first = inner_->segment(frame);
     timing_ = inner_->lastTiming();
+    first.segmented_index = frame.index;
     carrier_.reset(frame, first);
     return first;
   }
-  std::optional<InFlight> arrived;
-  if (in_flight_ && frame.index >= in_flight_->ready_at) arrived.swap(in_flight_);
-  if (!in_flight_) {
+  const auto scheduled = arrivals_.find(frame.index);
+  // Fixed lag: the worker is idle once its last result is due.
+  const bool busy = std::any_of(in_flight_.begin(), in_flight_.end(),
+                                [&](const InFlight& f) { return f.ready_at > frame.index; });
+  const bool start = arrivals_.empty() ? !busy : scheduled != arrivals_.end();
+  if (start) {
     // The idle worker takes the newest frame: this one.
     RgbdFrame copy = frame;
     copy.bgr = frame.bgr.clone();
     Instances instances = inner_->segment(frame);
+    instances.segmented_index = frame.index;
     for (const auto& [step, ms] : inner_->lastTiming()) timing_["worker." + step] = ms;
-    in_flight_ = InFlight{std::move(copy), std::move(instances), frame.index + lag_frames_};
-    // Lag 0: in time, no carrying needed.
-    if (lag_frames_ == 0) arrived.swap(in_flight_);
+    const int ready_at = arrivals_.empty() ? frame.index + lag_frames_ : scheduled->second;
+    in_flight_.push_back({std::move(copy), std::move(instances), ready_at});
+  }
+  // Of the results due now the newest is used (the real worker keeps only its newest result).
+  std::optional<InFlight> arrived;
+  for (auto it = in_flight_.begin(); it != in_flight_.end();) {
+    if (it->ready_at > frame.index) {
+      ++it;
+      continue;
+    }
+    if (!arrived || it->frame.index > arrived->frame.index) arrived = std::move(*it);
+    it = in_flight_.erase(it);
   }
   Instances carried =
       arrived ? carrier_.carry(frame, &arrived->instances, &arrived->frame) : carrier_.carry(frame);

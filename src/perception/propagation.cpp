@@ -63,6 +63,7 @@ Instances warpInstances(const Instances& reference, const cv::Mat& flow_small,
   cv::remap(reference.labels, out.labels, map, cv::Mat(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
             cv::Scalar());
   out.items = reference.items;
+  out.segmented_index = reference.segmented_index;
   tightenToLabels(out);
   timing.warp_ms = msSince(t0);
 

@@ -1,6 +1,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.hpp"
+#include "io/json_io.hpp"
 #include "perception/instance_memory.hpp"
 #include "perception/lagged_segmenter.hpp"
 #include "perception/mask_files.hpp"
@@ -64,6 +65,24 @@ std::unique_ptr<Segmenter> makeProvider(const SegmenterRequest& request,
                    "unknown segmenter '" + name + "' (use auto, dnn, hog, masks or none)");
 }
 
+/// `segmentation_arrivals` of a real-time run's stats.json: [[segmented, arrived_on], ...].
+std::map<int, int> readArrivals(const fs::path& stats_json) {
+  const nlohmann::json stats = readJsonFile(stats_json);
+  const auto it = stats.find("segmentation_arrivals");
+  if (it == stats.end() || !it->is_array() || it->empty())
+    throw InputError(stats_json, "no segmentation_arrivals (not a real-time run's stats.json?)");
+  std::map<int, int> arrivals;
+  for (const auto& pair : *it) {
+    if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() ||
+        !pair[1].is_number_integer() || pair[1].get<int>() < pair[0].get<int>())
+      throw InputError(stats_json,
+                       "segmentation_arrivals: expected [segmented, arrived_on] "
+                       "frame index pairs, arrived_on >= segmented");
+    arrivals[pair[0].get<int>()] = pair[1].get<int>();
+  }
+  return arrivals;
+}
+
 }  // namespace
 
 std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request,
@@ -79,6 +98,9 @@ std::unique_ptr<Segmenter> makeSegmenter(const SegmenterRequest& request,
   if (config.mask_memory_frames > 0)
     segmenter = std::make_unique<RememberingSegmenter>(std::move(segmenter),
                                                        config.mask_memory_frames, config);
+  if (!config.replay_arrivals.empty())
+    return std::make_unique<LaggedSegmenter>(std::move(segmenter),
+                                             readArrivals(config.replay_arrivals), config);
   if (config.emulated_lag_frames > 0)
     segmenter =
         std::make_unique<LaggedSegmenter>(std::move(segmenter), config.emulated_lag_frames, config);

@@ -67,6 +67,9 @@ class StatsSink final : public FrameSink {
   std::filesystem::path out_dir_;
   std::vector<double> latency_ms_;
   std::vector<FrameDynamics> dynamics_;
+  /// [segmented frame, frame its result was first used on]: replayable with
+  /// perception.replay_arrivals.
+  std::vector<std::pair<int, int>> arrivals_;
   std::vector<std::pair<int, double>>
       rss_mb_;  // (processed frames, resident MiB), every 100 frames
 };

@@ -79,6 +79,9 @@ void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
   latency_ms_.push_back(result.latency_ms);
   if (latency_ms_.size() % 100 == 1) rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
   if (result.dynamics) dynamics_.push_back(*result.dynamics);
+  const int segmented = result.instances.segmented_index;
+  if (segmented >= 0 && (arrivals_.empty() || segmented > arrivals_.back().first))
+    arrivals_.emplace_back(segmented, result.index);
 }
 
 void StatsSink::finish(const RunEnd& end) {
@@ -129,6 +132,7 @@ void StatsSink::finish(const RunEnd& end) {
       {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
       {"peak_rss_mb", peakRssMb()},
       {"rss_mb", rss_mb_}};  // [processed frames, MiB] every 100 frames: the memory curve
+  stats["segmentation_arrivals"] = arrivals_;
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
   writeJsonFile(out_dir_ / "stats.json", stats);

@@ -24,7 +24,10 @@ System::System(const Config& config, const PinholeCamera& camera,
     request.segment_every = std::max(1, config.run.segment_every);
     request.sequence_dir = sequence_dir;
     PerceptionConfig perception = config.perception;
-    if (config.run.realtime) perception.emulated_lag_frames = 0;  // the real lag replaces it
+    if (config.run.realtime) {  // the real lag replaces a replayed one
+      perception.emulated_lag_frames = 0;
+      perception.replay_arrivals.clear();
+    }
     segmenter_ = makeSegmenter(request, perception);
     // Real time: the segmenter runs in its own thread on the newest frame; its masks are
     // carried to the current frame by optical flow.
@@ -76,6 +79,7 @@ Instances System::segment(const RgbdFrame& input) {
   if (!dynamic_) return Instances::none(input.bgr.size());
   ScopedTimer timer(timers_, "segmentation");
   Instances instances = segmenter_->segment(input);
+  if (instances.segmented_index < 0) instances.segmented_index = input.index;  // in time
   for (const auto& [step, ms] : segmenter_->lastTiming()) timers_.add("segmentation." + step, ms);
   return instances;
 }

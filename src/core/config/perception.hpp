@@ -46,6 +46,7 @@ struct PerceptionConfig {
   int mask_memory_frames = 2;
   int carry_history_frames = 12;
   int emulated_lag_frames = 0;
+  std::string replay_arrivals;  // a real-time run's stats.json (empty: off)
   int carry_grow_px = 4;
 
   // Noise injection for the `masks` segmenter (robustness tests; all off by default).
@@ -113,6 +114,10 @@ struct PerceptionConfig {
       "a carried mask also takes pixels up to this far (px) from it that lie in its depth band: "
       "the part of a moving body a late mask has not reached (0: off)",
       Range{0, 100});
+    v("replay_arrivals", replay_arrivals,
+      "deterministic replay of a real-time run's segmentations: its stats.json, whose "
+      "segmentation_arrivals say which frames were segmented and on which frame each result "
+      "arrived (empty: off; ignored with --realtime)");
     v("emulated_lag_frames", emulated_lag_frames,
       "deterministic replay of real-time segmentation: frame s's masks are used from frame s+N "
       "on, carried by flow, the next segmentation starting there (0: off; ignored with "
