@@ -35,6 +35,9 @@ struct AudioFeedbackStats {
   std::string hrtf_name;
   std::string resampler;
   std::string voice;
+  std::string output;         ///< "file" or "live" (set by the run)
+  std::string live_device;    ///< --audio live: the device played on
+  size_t live_underruns = 0;  ///< --audio live: times the device ran dry
 };
 
 class AudioFeedback {

@@ -32,7 +32,12 @@ AudioStage::AudioStage(const Config& config, const std::filesystem::path& out_di
   stream.queue_messages = size_t(audio.queue_messages);
   const SpeechSynth check(options_.speech);  // a voice espeak-ng lacks fails here
   sinks_.push_back(std::make_unique<WavFileSink>(out_dir / "feedback.wav", kMixRateHz));
-  if (live) sinks_.push_back(std::make_unique<LivePlayback>(kMixRateHz, stream.tick_s));
+  if (live) {
+    auto playback = std::make_unique<LivePlayback>(kMixRateHz, stream.tick_s);
+    live_ = playback.get();
+    sinks_.push_back(std::move(playback));
+  }
+  output_ = audio.output;
 }
 
 void AudioStage::start(std::chrono::steady_clock::time_point epoch) {
@@ -59,7 +64,13 @@ void AudioStage::process(FrameResult& result) {
 
 AudioFeedbackStats AudioStage::finish(bool interrupted) {
   if (realtime_) now_s_ = std::max(now_s_, clockS());
-  return feedback_->finish(now_s_, interrupted);
+  AudioFeedbackStats stats = feedback_->finish(now_s_, interrupted);
+  stats.output = output_;
+  if (live_) {
+    stats.live_device = live_->deviceName();
+    stats.live_underruns = live_->underruns();
+  }
+  return stats;
 }
 
 }  // namespace dynanav

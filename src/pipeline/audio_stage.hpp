@@ -38,6 +38,8 @@ class AudioStage {
 
   AudioFeedbackOptions options_;
   std::vector<std::unique_ptr<PcmSink>> sinks_;  // handed to the stream by start()
+  std::string output_;
+  const LivePlayback* live_ = nullptr;  // among the sinks (--audio live)
   bool realtime_ = false;
   std::optional<double> first_stamp_s_;
   double now_s_ = 0.0;

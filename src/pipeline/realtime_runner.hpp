@@ -23,7 +23,7 @@ struct RealtimeOptions {
   size_t queue_frames = 2;  ///< frames that may wait for processing before the oldest is dropped
   /// The origin of FrameResult::arrival_s (shared with the audio stage's clock).
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  BeforeSinks before_sinks;  ///< runs on each result after arrival_s is set (may be empty)
+  BeforeSinks before_sinks = {};  ///< runs on each result after arrival_s is set (may be empty)
 };
 
 /// The stage the frames go through (System::process in a run; a fake in tests).

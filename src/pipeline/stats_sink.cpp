@@ -85,6 +85,7 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
                                   {"max", figure(latency.max_ms)},
                                   {"count", latency.count}};  // null figures: no message played
   stats["feedback_audio"] = {
+      {"output", a.output},
       {"messages", a.scheduler.offered + a.dropped_queue},
       {"rendered", a.scheduler.played},
       {"dropped_stale", a.scheduler.dropped_stale},
@@ -98,6 +99,8 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
       {"hrtf", a.hrtf},
       {"hrtf_data", a.hrtf_name},
       {"resampler", a.resampler}};
+  if (a.output == "live")
+    stats["feedback_audio"]["live"] = {{"device", a.live_device}, {"underruns", a.live_underruns}};
 }
 
 }  // namespace
