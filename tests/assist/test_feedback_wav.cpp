@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "assist/audio_feedback.hpp"
 #include "assist/earcon.hpp"
@@ -96,6 +97,11 @@ TEST(FeedbackWav, EarconIsLouderOnTheSideOfTheObject) {
       const double left = r.wav.rms(0, start, start + earconS(priority));
       const double right = r.wav.rms(1, start, start + earconS(priority));
       const double db = 20.0 * std::log10(left / right);  // > 0: louder on the left
+      std::printf("earcon %-8s at %+4.0f deg: left - right = %+5.1f dB\n",
+                  priority == P::kUrgent     ? "urgent"
+                  : priority == P::kAdvisory ? "advisory"
+                                             : "info",
+                  bearing, db);
       SCOPED_TRACE("priority " + std::to_string(int(priority)) + ", bearing " +
                    std::to_string(bearing) + ": left/right " + std::to_string(db) + " dB");
       EXPECT_GT(std::min(left, right), 0.0);
