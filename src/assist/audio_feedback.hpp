@@ -30,6 +30,7 @@ struct AudioFeedbackStats {
   std::vector<double> latency_ms;  ///< per played message: its start minus its reference
   std::vector<double> message_s;   ///< per played message: earcon + speech length
   std::vector<double> prepare_ms;  ///< per played message: synthesis and scheduling time
+  std::vector<double> stage_ms;    ///< per frame: the audio stage's time on the pipeline thread
   double stream_s = 0.0;           ///< length of the rendered stream
   bool hrtf = false;
   std::string hrtf_name;

@@ -51,21 +51,25 @@ double AudioStage::clockS() const {
 }
 
 void AudioStage::process(FrameResult& result) {
+  const auto begin = std::chrono::steady_clock::now();
   if (realtime_) {
     now_s_ = std::max(now_s_, clockS());
     feedback_->schedule(result.events, now_s_, result.arrival_s);
-    return;
+  } else {
+    if (!first_stamp_s_) first_stamp_s_ = result.stamp_s;
+    now_s_ = std::max(now_s_, result.stamp_s - *first_stamp_s_);
+    feedback_->advanceTo(now_s_);  // deterministic: the rendering is part of this stage
+    feedback_->schedule(result.events, now_s_, now_s_);
   }
-  if (!first_stamp_s_) first_stamp_s_ = result.stamp_s;
-  now_s_ = std::max(now_s_, result.stamp_s - *first_stamp_s_);
-  feedback_->advanceTo(now_s_);
-  feedback_->schedule(result.events, now_s_, now_s_);
+  stage_ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
 }
 
 AudioFeedbackStats AudioStage::finish(bool interrupted) {
   if (realtime_) now_s_ = std::max(now_s_, clockS());
   AudioFeedbackStats stats = feedback_->finish(now_s_, interrupted);
   stats.output = output_;
+  stats.stage_ms = stage_ms_;
   if (live_) {
     stats.live_device = live_->deviceName();
     stats.live_underruns = live_->underruns();

@@ -44,6 +44,7 @@ class AudioStage {
   std::optional<double> first_stamp_s_;
   double now_s_ = 0.0;
   std::unique_ptr<AudioFeedback> feedback_;
+  std::vector<double> stage_ms_;  // per frame
 };
 
 }  // namespace dynanav

@@ -79,6 +79,7 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
   const TimingSummary latency = summarize(a.latency_ms);
   const TimingSummary length = summarize(a.message_s);
   const TimingSummary prepare = summarize(a.prepare_ms);
+  const TimingSummary stage = summarize(a.stage_ms);
   auto figure = [&](double v) { return latency.count ? nlohmann::json(v) : nlohmann::json(); };
   stats["feedback_latency_ms"] = {{"mean", figure(latency.mean_ms)},
                                   {"p95", figure(latency.p95_ms)},
@@ -94,6 +95,7 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
       {"interrupted", a.scheduler.interrupted},
       {"message_s", {{"mean", length.mean_ms}, {"max", length.max_ms}}},
       {"prepare_ms", {{"mean", prepare.mean_ms}, {"p95", prepare.p95_ms}, {"max", prepare.max_ms}}},
+      {"stage_ms", {{"mean", stage.mean_ms}, {"p95", stage.p95_ms}, {"max", stage.max_ms}}},
       {"stream_s", a.stream_s},
       {"voice", a.voice},
       {"hrtf", a.hrtf},
