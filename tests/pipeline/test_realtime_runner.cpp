@@ -140,7 +140,8 @@ TEST(RealtimeRunner, UnpacedProcessesEveryFrameInOrder) {
 class EventSink final : public FrameSink {
  public:
   void consume(const RgbdFrame&, const FrameResult& result) override {
-    for (const FeedbackEvent& e : result.events) seen.emplace_back(result.arrival_s, e.audio_start_s);
+    for (const FeedbackEvent& e : result.events)
+      seen.emplace_back(result.arrival_s, e.audio_start_s);
   }
   void finish(const RunEnd&) override {}
   std::vector<std::pair<double, double>> seen;  // (arrival_s, audio_start_s)
