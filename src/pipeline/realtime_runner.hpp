@@ -5,6 +5,7 @@
 // System::process() as deterministic mode and feeds the sinks. Segmentation, local mapping and
 // loop closing have their own threads inside System (asynchronous segmenter, mapping stage,
 // global BA).
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -14,9 +15,15 @@
 
 namespace dynanav {
 
+/// A step between the pipeline and the sinks (the audio stage stamps its messages' starts).
+using BeforeSinks = std::function<void(FrameResult&)>;
+
 struct RealtimeOptions {
   bool paced = true;        ///< false (--unpaced): deliver as fast as processed, nothing dropped
   size_t queue_frames = 2;  ///< frames that may wait for processing before the oldest is dropped
+  /// The origin of FrameResult::arrival_s (shared with the audio stage's clock).
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  BeforeSinks before_sinks = {};  ///< runs on each result after arrival_s is set (may be empty)
 };
 
 /// The stage the frames go through (System::process in a run; a fake in tests).

@@ -6,8 +6,8 @@ namespace dynanav {
 
 const std::vector<std::string>& runOutputNames() {
   static const std::vector<std::string> names = {
-      "config_used.yaml", "trajectory.txt", "trajectory_online.txt", "keyframes.txt",
-      "stats.json",       "stats.json.tmp", "objects.jsonl",         "events.jsonl",
+      "config_used.yaml", "trajectory.txt", "trajectory_online.txt", "keyframes.txt", "stats.json",
+      "stats.json.tmp",   "objects.jsonl",  "events.jsonl",          "feedback.wav",
   };
   return names;
 }

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "io/json_io.hpp"
+#include "pipeline/audio_stage.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/map_sink.hpp"
 #include "pipeline/objects_sink.hpp"
@@ -27,11 +28,12 @@ namespace {
 
 /// Deterministic mode: every frame in order on this thread.
 void runInOrder(FrameSource& source, System& system, const std::vector<FrameSink*>& sinks,
-                RunSummary& summary) {
+                RunSummary& summary, const BeforeSinks& before_sinks) {
   for (auto frame = source.next(); frame && !interruptRequested(); frame = source.next()) {
     const auto arrival = std::chrono::steady_clock::now();
     FrameResult result = system.process(*frame);
     result.latency_ms = msSince(arrival);
+    if (before_sinks) before_sinks(result);
     summary.add(result);
     for (FrameSink* sink : sinks) sink->consume(*frame, result);
   }
@@ -62,6 +64,11 @@ RunSummary runSequence(const RunOptions& options) {
   // threads would compete with tracking at its priority. Deterministic mode keeps OpenCV's default.
   if (run.realtime && run.realtime_opencv_threads > 0)
     cv::setNumThreads(run.realtime_opencv_threads);
+  // Issue 14: the audio stage stamps each message's start before the writers see it; set up
+  // first, so a missing voice or sound device fails before the run. The messages' language is
+  // assist.language's once the message policy sets one; English until then.
+  std::optional<AudioStage> audio;
+  if (options.config.audio.output != "none") audio.emplace(options.config, options.out_dir, "en");
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
@@ -78,13 +85,19 @@ RunSummary runSequence(const RunOptions& options) {
   if (outputs.report) sinks.push_back(&report_sink.emplace(options.out_dir, options.sequence_dir));
   if (options.progress) sinks.push_back(&progress);
 
+  BeforeSinks before_sinks;
+  if (audio) before_sinks = [&audio](FrameResult& result) { audio->process(result); };
+
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
+  if (audio) audio->start(start);
   if (run.realtime)
     runRealtime(source, [&system](const RgbdFrame& f) { return system.process(f); }, sinks, summary,
-                {run.paced, size_t(std::max(1, run.queue_frames))});
+                {run.paced, size_t(std::max(1, run.queue_frames)), start, before_sinks});
   else
-    runInOrder(source, system, sinks, summary);
+    runInOrder(source, system, sinks, summary, before_sinks);
+  std::optional<AudioFeedbackStats> audio_stats;
+  if (audio) audio_stats = audio->finish(interruptRequested());
   system.finish();
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -94,7 +107,7 @@ RunSummary runSequence(const RunOptions& options) {
     spdlog::warn("interrupted by signal {} after {} frames: writing what the run has",
                  summary.interrupted_by_signal, summary.frames);
   summary.initialised = system.slam().numKeyFrames() > 0;
-  const RunEnd end{system, summary, wall_s, modeName(run)};
+  const RunEnd end{system, summary, wall_s, modeName(run), audio_stats ? &*audio_stats : nullptr};
   for (FrameSink* sink : sinks) sink->finish(end);
   spdlog::info(
       "{} frames: {} tracked, {} lost, {} skipped, {} dropped; {} keyframes, {} map points; {:.1f} "

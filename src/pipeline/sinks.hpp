@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "assist/audio_feedback.hpp"
 #include "core/frame.hpp"
 #include "io/trajectory.hpp"
 #include "pipeline/frame_result.hpp"
@@ -32,7 +33,8 @@ struct RunEnd {
   const System& system;
   const RunSummary& summary;
   double wall_s = 0.0;
-  std::string mode;  ///< "deterministic", "realtime" or "realtime-unpaced"
+  std::string mode;                           ///< "deterministic", "realtime" or "realtime-unpaced"
+  const AudioFeedbackStats* audio = nullptr;  ///< issue 14: with --audio
 };
 
 class FrameSink {

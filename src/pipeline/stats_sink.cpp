@@ -73,6 +73,38 @@ nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std
   return out;
 }
 
+/// Issue 14: what the audio stage did; latency from a frame's arrival (real time) or its stamp
+/// (deterministic: the wait for the channel only) to its message's start in the stream.
+void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
+  const TimingSummary latency = summarize(a.latency_ms);
+  const TimingSummary length = summarize(a.message_s);
+  const TimingSummary prepare = summarize(a.prepare_ms);
+  const TimingSummary stage = summarize(a.stage_ms);
+  auto figure = [&](double v) { return latency.count ? nlohmann::json(v) : nlohmann::json(); };
+  stats["feedback_latency_ms"] = {{"mean", figure(latency.mean_ms)},
+                                  {"p95", figure(latency.p95_ms)},
+                                  {"max", figure(latency.max_ms)},
+                                  {"count", latency.count}};  // null figures: no message played
+  stats["feedback_audio"] = {
+      {"output", a.output},
+      {"messages", a.scheduler.offered + a.dropped_queue},
+      {"rendered", a.scheduler.played},
+      {"dropped_stale", a.scheduler.dropped_stale},
+      {"dropped_busy", a.scheduler.dropped_busy},
+      {"dropped_queue", a.dropped_queue},
+      {"interrupted", a.scheduler.interrupted},
+      {"message_s", {{"mean", length.mean_ms}, {"max", length.max_ms}}},
+      {"prepare_ms", {{"mean", prepare.mean_ms}, {"p95", prepare.p95_ms}, {"max", prepare.max_ms}}},
+      {"stage_ms", {{"mean", stage.mean_ms}, {"p95", stage.p95_ms}, {"max", stage.max_ms}}},
+      {"stream_s", a.stream_s},
+      {"voice", a.voice},
+      {"hrtf", a.hrtf},
+      {"hrtf_data", a.hrtf_name},
+      {"resampler", a.resampler}};
+  if (a.output == "live")
+    stats["feedback_audio"]["live"] = {{"device", a.live_device}, {"underruns", a.live_underruns}};
+}
+
 }  // namespace
 
 void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
@@ -135,6 +167,7 @@ void StatsSink::finish(const RunEnd& end) {
   stats["segmentation_arrivals"] = arrivals_;
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
+  if (end.audio) addAudioJson(*end.audio, stats);
   writeJsonFile(out_dir_ / "stats.json", stats);
 }
 

@@ -136,6 +136,43 @@ TEST(RealtimeRunner, UnpacedProcessesEveryFrameInOrder) {
   for (int i = 0; i < 30; ++i) EXPECT_EQ(sink.indices[size_t(i)], i);
 }
 
+/// Records what the sinks see of each result's messages.
+class EventSink final : public FrameSink {
+ public:
+  void consume(const RgbdFrame&, const FrameResult& result) override {
+    for (const FeedbackEvent& e : result.events)
+      seen.emplace_back(result.arrival_s, e.audio_start_s);
+  }
+  void finish(const RunEnd&) override {}
+  std::vector<std::pair<double, double>> seen;  // (arrival_s, audio_start_s)
+};
+
+TEST(RealtimeRunner, BeforeSinksStampsEachResultBeforeTheSinksSeeIt) {
+  // Issue 14: the audio stage sets each message's audio_start_s before events.jsonl's writer
+  // consumes the result, on the clock of arrival_s (origin: RealtimeOptions::start).
+  FakeCamera camera(20, 200.0);
+  EventSink sink;
+  RunSummary summary;
+  RealtimeOptions options{false, 2};
+  options.start = std::chrono::steady_clock::now() - 10s;  // the run's clock began earlier
+  options.before_sinks = [](FrameResult& r) {
+    for (FeedbackEvent& e : r.events) e.audio_start_s = r.arrival_s + 0.5;
+  };
+  runRealtime(
+      camera,
+      [](const RgbdFrame& f) {
+        FrameResult r = slowStage(f, 0ms);
+        r.events.emplace_back();
+        return r;
+      },
+      {&sink}, summary, options);
+  ASSERT_EQ(sink.seen.size(), 20u);
+  for (const auto& [arrival_s, start_s] : sink.seen) {
+    EXPECT_GE(arrival_s, 10.0);
+    EXPECT_DOUBLE_EQ(start_s, arrival_s + 0.5);
+  }
+}
+
 TEST(RealtimeRunner, AStageErrorEndsTheRunAndReachesTheCaller) {
   FakeCamera camera(1000, 1000.0);
   RunSummary summary;
