@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "io/json_io.hpp"
+#include "pipeline/events_sink.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/map_sink.hpp"
 #include "pipeline/objects_sink.hpp"
@@ -68,6 +69,11 @@ RunSummary runSequence(const RunOptions& options) {
   ObjectsSink objects(options.out_dir);
   ProgressSink progress(source.expected());
   std::vector<FrameSink*> sinks = {&trajectory, &stats, &objects};
+  // Issue 14: the messages, whenever object tracking (and so the feedback stage) is on.
+  std::optional<EventsSink> events_sink;
+  const Config& config = options.config;
+  if (config.run.dynamic && config.objects.enabled && config.assist.enabled)
+    sinks.push_back(&events_sink.emplace(options.out_dir));
   // Issue 15: optional products; the report comes last (it reads stats.json and topview.png).
   const OutputsConfig& outputs = options.config.outputs;
   std::optional<MapSink> map_sink;

@@ -77,7 +77,8 @@ TEST(SimScenarios, ObjectsGroundTruthSpeedsAreTheScriptedOnes) {
 
   Simulator approach(quick("approach"));
   const auto mid = approach.render(90);
-  EXPECT_NEAR(mid.objects["objects"][0]["speed"].get<double>(), script::kApproachSpeedMps, 1e-6);
+  EXPECT_NEAR(mid.objects["objects"][0]["speed"].get<double>(),
+              approachScript(approach.options().seed).walker_speed_mps, 1e-6);
 }
 
 TEST(SimScenarios, CrossingPassesTwoMetresAhead) {
