@@ -36,7 +36,7 @@ struct AssistConfig {
   int confirm_frames = 2;
   double info_hold_s = 0.5;
   double min_gap_s = 3.0;
-  double stale_s = 1.5;
+  double stale_s = 4.0;
   double repeat_distance_m = 0.5;
   double repeat_bearing_deg = 20.0;
   double earcon_s = 0.25;
@@ -112,8 +112,8 @@ struct AssistConfig {
       "at most one non-urgent message per this many seconds (urgent ones are not limited)",
       Range{0, 60});
     v("stale_s", stale_s,
-      "a message that waited this long (s) for its turn is dropped; the object is announced "
-      "again when its situation changes",
+      "a message that waited this long (s) for its turn is dropped (it carries each frame's "
+      "values while it waits); the object is announced again when its situation changes",
       Range{0, 60, Range::kOpenLow});
     v("repeat_distance_m", repeat_distance_m,
       "a spoken distance class counts as changed only when the distance also moved this much (m) "
