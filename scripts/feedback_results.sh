@@ -40,9 +40,17 @@ person() {
     advisory) sed -n 's/.*first advisory \([0-9.]*\) s$/\1/p; s/.*first advisory none$/none/p' <<<"$line" ;;
   esac
 }
+# lead_of FILE ID: "2.41 s (audio 2.35 s)" or "none"
+lead_of() {
+  local lead audio
+  lead=$(person "$1" "$2" lead)
+  audio=$(person "$1" "$2" audio)
+  if [ "$lead" = none ]; then echo none; return; fi
+  if [ "$audio" = none ]; then echo "$lead s"; else echo "$lead s (audio $audio s)"; fi
+}
 yes_no() { if [ "$1" = 1 ]; then echo yes; else echo "**no**"; fi; }
 
-echo "| scene | seed | closest approach (GT) | messages: urgent / advisory / info | first urgent: lead before closest approach (from audio start) | most non-urgent in 3 s | unchanged repeats | target | met |"
+echo "| scene | seed | closest approach (ground truth) | messages: urgent / advisory / info | first urgent: lead before the closest approach | most non-urgent in 3 s | unchanged repeats | target | met |"
 echo "|---|---|---|---|---|---|---|---|---|"
 approach_met=0
 for seed in 1 2 3 4 5 6 7 8 9 10; do
@@ -52,14 +60,14 @@ for seed in 1 2 3 4 5 6 7 8 9 10; do
   lead=$(person "$f" 1 lead)
   ok=0; [ "$lead" != none ] && awk "BEGIN{exit !($lead >= 2.0)}" && ok=1
   approach_met=$((approach_met + ok))
-  echo "| approach | $seed | $(person "$f" 1 closest) m at $(person "$f" 1 at) s | $u / $a / $i | ${lead} s ($(person "$f" 1 audio)) | $w | $r | urgent ≥ 2.0 s before | $(yes_no $ok) |"
+  echo "| approach | $seed | $(person "$f" 1 closest) m at $(person "$f" 1 at) s | $u / $a / $i | $(lead_of "$f" 1) | $w | $r | urgent ≥ 2.0 s before | $(yes_no $ok) |"
 done
 for scene in crossing crossing-near parallel walking-away static-room office; do
   score $scene 1
   f="$out/run_${scene}_1/eval.txt"
   read -r n u a i w r <<<"$(counts "$f")"
   closest="$(person "$f" 1 closest) m at $(person "$f" 1 at) s"
-  lead="$(person "$f" 1 lead) s ($(person "$f" 1 audio))"
+  lead=$(lead_of "$f" 1)
   case $scene in
     crossing) target="advisory, no urgent (passes outside the corridor)"
       ok=0; [ "$a" -ge 1 ] && [ "$u" = 0 ] && ok=1 ;;
@@ -69,8 +77,13 @@ for scene in crossing crossing-near parallel walking-away static-room office; do
       ok=0; [ "$u" = 0 ] && ok=1 ;;
     static-room) target="no message"; closest="(nobody)"; lead="none"
       ok=0; [ "$n" = 0 ] && ok=1 ;;
-    office) target="≤ 1 non-urgent per 3 s, no unchanged repeat"; closest="3 people"
-      lead="see eval.txt"
+    office) target="≤ 1 non-urgent per 3 s, no unchanged repeat"
+      closest=""; lead=""
+      for id in 1 2 3; do
+        closest+="$id: $(person "$f" $id closest) m at $(person "$f" $id at) s; "
+        lead+="$id: $(lead_of "$f" $id); "
+      done
+      closest=${closest%; }; lead=${lead%; }
       ok=0; [ "$w" -le 1 ] && [ "$r" = 0 ] && ok=1 ;;
   esac
   echo "| $scene | 1 | $closest | $u / $a / $i | $lead | $w | $r | $target | $(yes_no $ok) |"
