@@ -30,7 +30,8 @@ struct RunFlags {
   int max_frames = 0;
   bool quiet = false;
   bool map = false, video = false, report = false, all_outputs = false;  // issue 15
-  std::string audio;  // issue 14: "file" (--audio) or "live"
+  std::string audio;     // issue 14: "file" (--audio) or "live"
+  std::string language;  // issue 14
 };
 
 int runCommand(const RunFlags& flags) {
@@ -41,6 +42,7 @@ int runCommand(const RunFlags& flags) {
   if (!flags.dynamic.empty()) options.config.run.dynamic = flags.dynamic == "on";
   if (!flags.segmenter.empty()) options.config.run.segmenter = flags.segmenter;  // issue 7
   if (!flags.models.empty()) options.config.perception.models_dir = flags.models;
+  if (!flags.language.empty()) options.config.assist.language = flags.language;  // issue 14
   if (flags.segment_every < 0) throw InputError("--segment-every", "must be >= 1");
   if (flags.segment_every > 0) options.config.run.segment_every = flags.segment_every;
   if (flags.deterministic && flags.realtime)
@@ -137,6 +139,8 @@ void registerRun(CLI::App& root, Action& chosen) {
       ->check(finiteRange(1, 1000000));
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");
+  sub->add_option("--language", flags->language, "en|de: language of the spoken messages")
+      ->check(CLI::IsMember({"en", "de"}));
   sub->add_flag("--quiet", flags->quiet, "only warnings and errors, no progress bar");
   sub->add_flag("--map", flags->map,
                 "write the static map: map.ply, map.bt, occupancy.png, topview.png, map_info.json");

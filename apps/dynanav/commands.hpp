@@ -29,6 +29,7 @@ void registerRun(CLI::App& root, Action& chosen);          // cmd_run.cpp
 void registerEval(CLI::App& root, Action& chosen);         // cmd_eval.cpp
 void registerEvalMasks(CLI::App& root, Action& chosen);    // cmd_eval_masks.cpp
 void registerEvalObjects(CLI::App& root, Action& chosen);  // cmd_eval_objects.cpp
+void registerEvalEvents(CLI::App& root, Action& chosen);   // cmd_eval_events.cpp
 void registerSimulate(CLI::App& root, Action& chosen);     // cmd_simulate.cpp
 void registerSegment(CLI::App& root, Action& chosen);      // cmd_segment.cpp
 void registerVocabulary(CLI::App& root, Action& chosen);   // cmd_vocabulary.cpp

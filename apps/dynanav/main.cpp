@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   dynanav::cli::registerEval(app, chosen);
   dynanav::cli::registerEvalMasks(app, chosen);
   dynanav::cli::registerEvalObjects(app, chosen);
+  dynanav::cli::registerEvalEvents(app, chosen);
   dynanav::cli::registerSimulate(app, chosen);
   dynanav::cli::registerSegment(app, chosen);
   dynanav::cli::registerVocabulary(app, chosen);

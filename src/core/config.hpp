@@ -20,6 +20,7 @@ struct Config {
   PerceptionConfig perception;
   DynamicsConfig dynamics;
   ObjectTrackingConfig objects;
+  AssistConfig assist;
   RunConfig run;
   OutputsConfig outputs;
   AudioConfig audio;
@@ -34,6 +35,7 @@ struct Config {
     v("perception", perception);
     v("dynamics", dynamics);
     v("objects", objects);
+    v("assist", assist);
     v("run", run);
     v("outputs", outputs);
     v("audio", audio);

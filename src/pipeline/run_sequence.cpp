@@ -13,6 +13,7 @@
 #include "core/interrupt.hpp"
 #include "io/json_io.hpp"
 #include "pipeline/audio_stage.hpp"
+#include "pipeline/events_sink.hpp"
 #include "pipeline/frame_source.hpp"
 #include "pipeline/map_sink.hpp"
 #include "pipeline/objects_sink.hpp"
@@ -65,16 +66,22 @@ RunSummary runSequence(const RunOptions& options) {
   if (run.realtime && run.realtime_opencv_threads > 0)
     cv::setNumThreads(run.realtime_opencv_threads);
   // Issue 14: the audio stage stamps each message's start before the writers see it; set up
-  // first, so a missing voice or sound device fails before the run. The messages' language is
-  // assist.language's once the message policy sets one; English until then.
+  // first, so a missing voice or sound device fails before the run; the voice speaks the
+  // messages' language (assist.language).
   std::optional<AudioStage> audio;
-  if (options.config.audio.output != "none") audio.emplace(options.config, options.out_dir, "en");
+  if (options.config.audio.output != "none")
+    audio.emplace(options.config, options.out_dir, options.config.assist.language);
   System system(options.config, source.camera(), options.sequence_dir);
   TrajectorySink trajectory(options.out_dir);
   StatsSink stats(options.out_dir);
   ObjectsSink objects(options.out_dir);
   ProgressSink progress(source.expected());
   std::vector<FrameSink*> sinks = {&trajectory, &stats, &objects};
+  // Issue 14: the messages, whenever object tracking (and so the feedback stage) is on.
+  std::optional<EventsSink> events_sink;
+  const Config& config = options.config;
+  if (config.run.dynamic && config.objects.enabled && config.assist.enabled)
+    sinks.push_back(&events_sink.emplace(options.out_dir));
   // Issue 15: optional products; the report comes last (it reads stats.json and topview.png).
   const OutputsConfig& outputs = options.config.outputs;
   std::optional<MapSink> map_sink;

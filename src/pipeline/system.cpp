@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "assist/feedback_stage.hpp"
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_tracker.hpp"
 #include "dynamics/prior_verifier.hpp"
@@ -38,6 +39,8 @@ System::System(const Config& config, const PinholeCamera& camera,
     verifier_ = std::make_unique<PriorVerifier>(config.dynamics);
     if (config.objects.enabled)
       tracker_ = std::make_unique<ObjectTracker>(config.objects, config.dynamics.sample_step_px);
+    if (config.objects.enabled && config.assist.enabled)
+      feedback_ = std::make_unique<FeedbackStage>(config.assist);
   }
   slam_ = std::make_unique<SlamSystem>(config, camera, &timers_);
 }
@@ -66,8 +69,8 @@ FrameResult System::process(const RgbdFrame& input) {
   }
   verifyPriors(prep, input, frame, outcome, result);  // 7. scene flow: moving or not
   trackObjects(prep, input, frame, outcome, result);  // 8. object ids, motion, speed
-  // 9. feedback fills result.events (issue 14).
-  slam_->finishFrame(frame, outcome);  // 10. local mapping, anchors
+  giveFeedback(input, frame, outcome, result);        // 9. hazards -> messages (issue 14)
+  slam_->finishFrame(frame, outcome);                 // 10. local mapping, anchors
   fillResult(frame, outcome, result);
   result.index = input.index;
   result.stamp_s = input.stamp_s;
@@ -159,6 +162,14 @@ void System::trackObjects(const PreparedFrame& prep, const RgbdFrame& input, con
   result.objects = tracker_->track({input.index, input.stamp_s, result.instances, *result.dynamics,
                                     prep.flow_half, input.depth_m, T_world_camera,
                                     outcome.state == TrackingState::kOk, camera_});
+}
+
+void System::giveFeedback(const RgbdFrame& input, const Frame& frame, const TrackOutcome& outcome,
+                          FrameResult& result) {
+  if (!feedback_) return;
+  ScopedTimer timer(timers_, "feedback");
+  result.events = feedback_->process({input.stamp_s, frame.T_camera_world.inverse(),
+                                      outcome.state == TrackingState::kOk, result.objects});
 }
 
 void System::fillResult(const Frame& frame, const TrackOutcome& outcome,

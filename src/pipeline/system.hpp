@@ -23,6 +23,7 @@ namespace dynanav {
 class SlamSystem;
 class PriorVerifier;
 class ObjectTracker;
+class FeedbackStage;
 struct Frame;
 struct LoopEvent;
 struct TrackOutcome;
@@ -56,6 +57,8 @@ class System {
                     const TrackOutcome& outcome, FrameResult& result);
   void trackObjects(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
                     const TrackOutcome& outcome, FrameResult& result);
+  void giveFeedback(const RgbdFrame& input, const Frame& frame, const TrackOutcome& outcome,
+                    FrameResult& result);
   void fillResult(const Frame& frame, const TrackOutcome& outcome, FrameResult& result) const;
 
   Config config_;
@@ -67,7 +70,8 @@ class System {
   std::string segmenter_name_ = "off";
   std::unique_ptr<SlamSystem> slam_;
   std::unique_ptr<PriorVerifier> verifier_;
-  std::unique_ptr<ObjectTracker> tracker_;  // null with dynamics or object tracking off
+  std::unique_ptr<ObjectTracker> tracker_;   // null with dynamics or object tracking off
+  std::unique_ptr<FeedbackStage> feedback_;  // null without tracker_ or with assist off
   std::vector<uint16_t>
       depth_voted_;  // this frame's non-prior instances the depth test found moving
 };

@@ -25,8 +25,9 @@ struct Stage {
   std::unique_ptr<Scene> scene = std::make_unique<Scene>();
   Rng rng;
   WorldBuilder build;
-  Stage(uint64_t seed, const PhotoLibrary& photos, float tpm)
-      : rng(seed), build(scene->world, rng, photos, tpm) {}
+  uint64_t seed;
+  Stage(uint64_t seed_, const PhotoLibrary& photos, float tpm)
+      : rng(seed_), build(scene->world, rng, photos, tpm), seed(seed_) {}
 
   Mover& person(uint16_t id, const Motion& motion) {
     scene->people.push_back(std::make_unique<Person>(scene->world, rng, build.texelsPerMetre()));
@@ -118,7 +119,9 @@ std::unique_ptr<Scene> staticRoom(Stage& st) {
   return std::move(st.scene);
 }
 
-std::unique_ptr<Scene> approach(Stage& st) {
+/// The hall of `approach` and the other straight-line encounters: 5 x 14 m, shelves and cabinets
+/// along both walls, the wearer walking up its middle (x = 2.5) from z = 1.
+void furnishHall(Stage& st) {
   WorldBuilder& b = st.build;
   b.room({0, 0}, {5, 14}, 2.7);
   for (int i = 0; i < 4; ++i) {
@@ -130,15 +133,68 @@ std::unique_ptr<Scene> approach(Stage& st) {
   b.plant({0.5, 8.3});
   b.plant({4.5, 12.8});
   b.closedDoor({2.5, 14.0}, kSouth);
-  st.wearer({{2.5, 1.0}, {2.5, 12.0}}, 0.8, 1.0);
-  st.person(1, Motion({2.0, 12.5}, kSouth)
-                   .wait(0.5)
-                   .walk(line({2.0, 12.5}, {2.0, 1.5}), script::kApproachSpeedMps));
-  st.scene->duration_s = 9.0;
+}
+
+/// Ends the scene `after_s` after the walker's closest approach to the wearer (or at `max_s`).
+void endAfterClosestApproach(Stage& st, const Motion& walker, double after_s, double max_s) {
+  double best = 1e9, t_best = 0.0;
+  for (double t = 0.0; t < max_s; t += 0.01) {
+    const double d = (walker.at(t).position - st.scene->wearer.at(t).position).norm();
+    if (d < best) best = d, t_best = t;
+  }
+  st.scene->duration_s = std::min(max_s, t_best + after_s);
+}
+
+std::unique_ptr<Scene> approach(Stage& st) {
+  furnishHall(st);
+  const ApproachScript a = approachScript(st.seed);
+  st.wearer({{2.5, 1.0}, {2.5, 12.0}}, a.wearer_speed_mps, 1.0);
+  const double x = 2.5 + a.offset_m;
+  const Motion walker = Motion({x, 12.5}, kSouth)
+                            .wait(a.walker_wait_s)
+                            .walk(line({x, 12.5}, {x, 1.5}), a.walker_speed_mps);
+  st.person(1, walker);
+  endAfterClosestApproach(st, walker, 2.0, 12.0);
   return std::move(st.scene);
 }
 
-std::unique_ptr<Scene> crossing(Stage& st) {
+std::unique_ptr<Scene> parallel(Stage& st) {
+  // A hall 7 m wide; the walker comes down a line kParallelOffsetM to the wearer's left (+x is
+  // left of a wearer facing +z). The wearer looks 40 degrees to the left while walking straight
+  // on (a 62-degree camera sees the walker only so, with depth within 4.5 m): the walker passes
+  // at 10-11 o'clock of the walking direction, though nearly straight ahead of the head.
+  st.scene->head.yaw_offset_rad = 40.0 * kPi / 180.0;
+  WorldBuilder& b = st.build;
+  b.room({0, 0}, {7, 14}, 2.7);
+  for (int i = 0; i < 4; ++i) {
+    b.shelf({0.18, 2.0 + 3.2 * i}, kEast, 1.0);
+    b.cabinet({6.77, 1.5 + 3.1 * i}, kWest);
+  }
+  b.closedDoor({0.0, 3.6}, kEast);
+  b.plant({0.5, 8.3});
+  b.plant({6.5, 12.8});
+  b.closedDoor({3.5, 14.0}, kSouth);
+  st.wearer({{2.0, 1.0}, {2.0, 12.0}}, 0.8, 1.0);
+  const double x = 2.0 + script::kParallelOffsetM;
+  const Motion walker = Motion({x, 11.0}, kSouth).wait(0.5).walk(line({x, 11.0}, {x, 0.8}), 1.0);
+  st.person(1, walker);
+  endAfterClosestApproach(st, walker, 1.5, 12.0);
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> walkingAway(Stage& st) {
+  // A walker 1.8 m ahead (slightly to the left) sets off up the hall, faster than the wearer.
+  furnishHall(st);
+  st.wearer({{2.5, 1.0}, {2.5, 12.0}}, 0.8, 1.0);
+  // The walker sets off before the wearer, so it is faster from the first step.
+  st.person(1, Motion({2.2, 2.8}, kNorth)
+                   .wait(0.3)
+                   .walk(line({2.2, 2.8}, {2.2, 13.0}), script::kAwaySpeedMps, 0.5));
+  st.scene->duration_s = 7.0;
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> crossingAt(Stage& st, double ahead_m) {
   furnishOffice(st, /*pillar=*/false);  // the walker's line passes where the pillar stands
   // A double bookcase 0.6 m beyond the walker's line keeps the view ahead within depth range.
   for (double x : {2.9, 4.1}) {
@@ -147,18 +203,25 @@ std::unique_ptr<Scene> crossing(Stage& st) {
   }
   const double v_wearer = 0.9, wait = 0.5, ramp = 1.0, x_w = 3.5, z_w0 = 1.8;
   st.wearer({{x_w, z_w0}, {x_w, 5.2}}, v_wearer, 1.0, wait);
-  // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is kCrossingAheadM short
-  // of it.
+  // The walker reaches the wearer's line (x = x_w) at t_c, when the wearer is ahead_m short of it.
   const double start_x = 6.3, t_c = 3.0;
   const double s_wearer =
       v_wearer * ramp / 2 + v_wearer * (t_c - wait - ramp);  // trapezoid, past the ramp
-  const double z_c = z_w0 + s_wearer + script::kCrossingAheadM;
+  const double z_c = z_w0 + s_wearer + ahead_m;
   const double t_start = t_c - (start_x - x_w) / script::kCrossingSpeedMps;
   st.person(1, Motion({start_x, z_c}, kWest)
                    .wait(t_start)
                    .walk(line({start_x, z_c}, {1.0, z_c}), script::kCrossingSpeedMps));
   st.scene->duration_s = 7.0;
   return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> crossing(Stage& st) {
+  return crossingAt(st, script::kCrossingAheadM);
+}
+
+std::unique_ptr<Scene> crossingNear(Stage& st) {
+  return crossingAt(st, script::kNearCrossingAheadM);
 }
 
 std::unique_ptr<Scene> office(Stage& st) {
@@ -276,6 +339,10 @@ const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
        staticRoom},
       {{"approach", "a person walks straight at the wearer down a long room at 1.0 m/s"}, approach},
       {{"crossing", "a person crosses the wearer's path 2 m ahead at 1.4 m/s"}, crossing},
+      {{"crossing-near", "a person crosses the wearer's path 0.5 m ahead at 1.4 m/s (a near miss)"},
+       crossingNear},
+      {{"parallel", "a person walks towards the wearer on a line 3 m to the side"}, parallel},
+      {{"walking-away", "a person 1.8 m ahead walks away from the wearer at 1.3 m/s"}, walkingAway},
       {{"office", "three people walk about an office while the wearer walks (demo default)"},
        office},
       {{"pushed-box", "a person pushes a box 1 m and walks away (a non-prior mover)"}, pushedBox},
@@ -285,6 +352,16 @@ const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
   return list;
 }
 }  // namespace
+
+ApproachScript approachScript(uint64_t seed) {
+  Rng rng = Rng::stream(seed, 0x617070726f616368ULL);  // "approach"
+  ApproachScript a;
+  a.walker_speed_mps = rng.uniform(0.8, 1.2);
+  a.wearer_speed_mps = rng.uniform(0.7, 0.9);
+  a.offset_m = rng.uniform(0.2, 0.6) * (rng.chance(0.5) ? 1.0 : -1.0);
+  a.walker_wait_s = rng.uniform(0.3, 1.2);
+  return a;
+}
 
 const std::vector<ScenarioInfo>& scenarioList() {
   static const std::vector<ScenarioInfo> infos = [] {

@@ -26,7 +26,8 @@ SE3 Scene::T_room_camera(double t) const {
   const double look =
       h.look_around_rad * std::sin(2.0 * M_PI * t / h.look_period_s) +
       0.4 * h.look_around_rad * std::sin(2.0 * M_PI * t / (0.37 * h.look_period_s) + 1.0);
-  const double yaw = st.heading_rad + look + amount * h.yaw_sway_rad * std::sin(phase);
+  const double yaw =
+      st.heading_rad + h.yaw_offset_rad + look + amount * h.yaw_sway_rad * std::sin(phase);
   const double pitch = h.pitch_rad + amount * h.pitch_sway_rad * std::sin(2.0 * phase) +
                        0.3 * h.look_around_rad * std::sin(2.0 * M_PI * t / (1.3 * h.look_period_s));
   const double roll = amount * h.roll_sway_rad * std::sin(phase + 0.5);

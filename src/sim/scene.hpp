@@ -36,6 +36,7 @@ struct HeadMotion {
   double look_around_rad = 0.05;  ///< slow yaw wander (period look_period_s)
   double look_period_s = 7.0;
   double nominal_speed_mps = 1.0;  ///< speed at which the sway amplitudes apply in full
+  double yaw_offset_rad = 0.0;     ///< the head turned this far right of the walking direction
 };
 
 class Scene {

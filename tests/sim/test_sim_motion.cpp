@@ -1,6 +1,8 @@
 // Scripted motion: paths, speeds, the wearer's camera, and the ground truth built from them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "core/error.hpp"
 #include "sim/simulator.hpp"
 
@@ -77,7 +79,8 @@ TEST(SimScenarios, ObjectsGroundTruthSpeedsAreTheScriptedOnes) {
 
   Simulator approach(quick("approach"));
   const auto mid = approach.render(90);
-  EXPECT_NEAR(mid.objects["objects"][0]["speed"].get<double>(), script::kApproachSpeedMps, 1e-6);
+  EXPECT_NEAR(mid.objects["objects"][0]["speed"].get<double>(),
+              approachScript(approach.options().seed).walker_speed_mps, 1e-6);
 }
 
 TEST(SimScenarios, CrossingPassesTwoMetresAhead) {
@@ -96,6 +99,63 @@ TEST(SimScenarios, CrossingPassesTwoMetresAhead) {
       walker.motion.at(t_cross).position.y() - scene.wearer.at(t_cross).position.y();
   EXPECT_NEAR(ahead, script::kCrossingAheadM, 0.01);
   EXPECT_NEAR(walker.motion.scriptedSpeed(t_cross), script::kCrossingSpeedMps, 1e-12);
+}
+
+/// Closest ground distance (m) between the first mover and the wearer, and when (s).
+std::pair<double, double> closestApproach(const Scene& scene) {
+  const Mover& walker = scene.movers.at(0);
+  double best = 1e9, t_best = 0.0;
+  for (double t = 0; t < scene.duration_s; t += 0.005) {
+    const double d = (walker.motion.at(t).position - scene.wearer.at(t).position).norm();
+    if (d < best) best = d, t_best = t;
+  }
+  return {best, t_best};
+}
+
+TEST(SimScenarios, ApproachEncounterVariesWithTheSeed) {
+  std::vector<double> speeds;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    const ApproachScript a = approachScript(seed);
+    EXPECT_GE(a.walker_speed_mps, 0.8);
+    EXPECT_LE(a.walker_speed_mps, 1.2);
+    EXPECT_GE(std::abs(a.offset_m), 0.2);
+    EXPECT_LE(std::abs(a.offset_m), 0.6);
+    speeds.push_back(a.walker_speed_mps);
+    SimOptions o = quick("approach");
+    o.seed = seed;
+    Simulator sim(o);
+    const auto [closest, at] = closestApproach(sim.scene());
+    EXPECT_NEAR(closest, std::abs(a.offset_m), 0.01) << seed;  // head-on, offset aside
+    EXPECT_GE(sim.scene().duration_s, at + 1.9) << "the scene covers the closest approach";
+    EXPECT_EQ(approachScript(seed).walker_speed_mps, a.walker_speed_mps) << "deterministic";
+  }
+  std::sort(speeds.begin(), speeds.end());
+  EXPECT_EQ(std::unique(speeds.begin(), speeds.end()), speeds.end()) << "ten different walkers";
+}
+
+TEST(SimScenarios, FeedbackEncounters) {
+  {
+    Simulator sim(quick("crossing-near"));
+    EXPECT_LT(closestApproach(sim.scene()).first, 0.5);  // inside the 0.8 m corridor
+    Simulator far(quick("crossing"));
+    EXPECT_GT(closestApproach(far.scene()).first, 1.6);  // outside it
+  }
+  {
+    Simulator sim(quick("parallel"));
+    EXPECT_NEAR(closestApproach(sim.scene()).first, script::kParallelOffsetM, 0.01);
+    EXPECT_GT(sim.scene().head.yaw_offset_rad, 0.5);  // looking towards the walker's side
+  }
+  {
+    Simulator sim(quick("walking-away"));
+    const Scene& scene = sim.scene();
+    double last = 0.0;
+    for (double t = 0; t < scene.duration_s; t += 0.01) {
+      const double d =
+          (scene.movers.at(0).motion.at(t).position - scene.wearer.at(t).position).norm();
+      EXPECT_GE(d, last - 1e-9) << "never closer, t = " << t;
+      last = d;
+    }
+  }
 }
 
 TEST(SimScenarios, PushedBoxMovesOneMetreAtPushSpeed) {
