@@ -1,7 +1,10 @@
 #include "dynamics/object_tracker.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
+#include <cstdio>
+#include <cstdlib>
 
 #include "dynamics/object_motion.hpp"
 #include "dynamics/object_points.hpp"
@@ -24,6 +27,25 @@ uint16_t labelAt(const cv::Mat& labels, const Eigen::Vector2d& pixel) {
   const int x = int(std::lround(pixel.x())), y = int(std::lround(pixel.y()));
   if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return 0;
   return labels.at<uint16_t>(y, x);
+}
+
+/// A standing adult's height (m): with the median depth of a person's mask, how tall the whole
+/// person would be in the image when the head or the feet are out of view (trunk band).
+constexpr double kPersonHeightM = 1.7;
+
+double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv::Mat& depth_m,
+                       int step) {
+  std::vector<float> z;
+  const cv::Rect box = instance.box & cv::Rect(0, 0, labels.cols, labels.rows);
+  for (int y = box.y; y < box.y + box.height; y += step)
+    for (int x = box.x; x < box.x + box.width; x += step)
+      if (labels.at<uint16_t>(y, x) == instance.id) {
+        const float d = depth_m.at<float>(y, x);
+        if (std::isfinite(d) && d > 0.f) z.push_back(d);
+      }
+  if (z.empty()) return 0.0;
+  std::nth_element(z.begin(), z.begin() + long(z.size() / 2), z.end());
+  return z[z.size() / 2];
 }
 
 }  // namespace
@@ -128,6 +150,17 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
   return match;
 }
 
+std::vector<cv::Point2f> ObjectTracker::samplePixels(const Instance& instance,
+                                                     const ObjectTrackerInput& input) const {
+  SampleOptions options{sample_step_px_, config_.max_points, config_.trunk_min_points};
+  if (instance.class_name == "person")
+    if (const double z = medianMaskDepth(instance, input.instances.labels, input.depth_m,
+                                         2 * sample_step_px_);
+        z > 0.0)
+      options.person_height_px = kPersonHeightM * input.camera.fy / z;
+  return sampleObjectPixels(input.instances.labels, instance, options);
+}
+
 void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
                          const ObjectTrackerInput& input) const {
   track.pixels.clear();
@@ -206,22 +239,28 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.motion = SE3::Identity();
     }
   }
-  lift(track, kept_pixels, input);
-  const bool thin = double(track.pixels.size()) < config_.replenish_share * track.sampled ||
-                    int(track.pixels.size()) < config_.min_motion_points;
-  if (instance && thin) {
+  // The points for the next frame and the centre: sampled afresh from this frame's mask when
+  // the segmenter saw the object (carried points drift over the body, and a track started on a
+  // leg entering the view would keep measuring the leg); the carried ones when it did not.
+  if (instance)
     lift(track,
-         sampleObjectPixels(input.instances.labels, *instance,
-                            {sample_step_px_, config_.max_points, config_.trunk_min_points}),
-         input);
-    track.sampled = int(track.pixels.size());
-  }
+         samplePixels(*instance, input), input);
+  else
+    lift(track, kept_pixels, input);
   std::vector<Vec3> p_camera;
   p_camera.reserve(track.p_world.size());
   for (const Vec3& p : track.p_world) p_camera.push_back(T_camera_world * p);
   if (const auto centre = objectCentre(p_camera, config_.depth_band_m,
-                                       behindSurface(track.class_name, p_camera, config_)))
+                                       behindSurface(track.class_name, p_camera, config_))) {
     track.filter.update(input.T_world_camera * *centre, v_measured);
+    if (std::getenv("TRKDBG")) {
+      const Vec3 cw = input.T_world_camera * *centre;
+      const Vec3 v = v_measured ? *v_measured : Vec3(NAN, NAN, NAN);
+      std::fprintf(stderr, "DBG %.6f %llu %.4f %.4f %.4f %.4f %.4f %.4f %zu %d\n", input.stamp_s,
+                   (unsigned long long)track.id, cw.x(), cw.y(), cw.z(), v.x(), v.y(), v.z(),
+                   track.pixels.size(), instance ? 1 : 0);
+    }
+  }
   // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
   if (instance) {
     const bool moving = contains(input.dynamics.moving_ids, instance->id);
@@ -245,10 +284,7 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   t.instance = instance.id;
   t.last_stamp_s = input.stamp_s;
   lift(t,
-       sampleObjectPixels(input.instances.labels, instance,
-                          {sample_step_px_, config_.max_points, config_.trunk_min_points}),
-       input);
-  t.sampled = int(t.pixels.size());
+       samplePixels(instance, input), input);
   const SE3 T_camera_world = input.T_world_camera.inverse();
   std::vector<Vec3> p_camera;
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);

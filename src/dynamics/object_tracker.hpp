@@ -46,7 +46,6 @@ class ObjectTracker {
     std::string class_name;
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
-    int sampled = 0;                  // points at the last (re)sampling
     uint16_t instance = 0;            // label in the last frame (0: carried)
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
@@ -65,6 +64,9 @@ class ObjectTracker {
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
+  std::vector<cv::Point2f> samplePixels(const Instance& instance,
+                                        const ObjectTrackerInput& input) const;
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped.
   void lift(Track& track, const std::vector<cv::Point2f>& pixels,
             const ObjectTrackerInput& input) const;
