@@ -61,8 +61,8 @@ std::vector<cv::Point2f> gridIn(const cv::Mat& labels, uint16_t id, cv::Rect are
 
 }  // namespace
 
-std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
-                                            const SampleOptions& options) {
+ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                const SampleOptions& options) {
   const int step = std::max(1, options.step_px);
   std::vector<cv::Point2f> points;
   if (const auto trunk = trunkBox(instance)) {
@@ -70,8 +70,8 @@ std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instanc
   } else if (const auto band = trunkBand(instance, labels.rows, options.person_height_px)) {
     points = gridIn(labels, instance.id, *band, step);
   }
-  if (int(points.size()) < options.trunk_min_points)
-    points = gridIn(labels, instance.id, instance.box, step);
+  const bool trunk = int(points.size()) >= options.trunk_min_points;
+  if (!trunk) points = gridIn(labels, instance.id, instance.box, step);
   if (options.max_points > 0 && int(points.size()) > options.max_points) {
     std::vector<cv::Point2f> thinned;
     thinned.reserve(size_t(options.max_points));
@@ -79,7 +79,7 @@ std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instanc
     for (int k = 0; k < options.max_points; ++k) thinned.push_back(points[size_t(k * stride)]);
     points = std::move(thinned);
   }
-  return points;
+  return {std::move(points), trunk};
 }
 
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel) {

@@ -27,8 +27,12 @@ struct SampleOptions {
 /// found, else the band 20-50 % of the person's height below the top of the head: the height is
 /// the box's when the box is wholly in view, else options.person_height_px measured from the end
 /// of the box that is in view (the head, or the feet).
-std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
-                                            const SampleOptions& options);
+struct ObjectSample {
+  std::vector<cv::Point2f> pixels;
+  bool trunk = false;  ///< a person's trunk (else the whole mask: its centre is not the trunk's)
+};
+ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                const SampleOptions& options);
 
 /// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
 /// false when it leaves the image.
