@@ -6,10 +6,13 @@
 
 namespace dynanav {
 
-KalmanCv::KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise) : noise_(noise) {
+KalmanCv::KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise,
+                   const std::optional<Mat3>& position_cov_world)
+    : noise_(noise) {
   x_.head<3>() = p_world;
   P_.setZero();
-  P_.topLeftCorner<3, 3>() = Mat3::Identity() * noise.position_sigma_m * noise.position_sigma_m;
+  P_.topLeftCorner<3, 3>() = position_cov_world.value_or(Mat3::Identity() * noise.position_sigma_m *
+                                                         noise.position_sigma_m);
   P_.bottomRightCorner<3, 3>() =
       Mat3::Identity() * noise.initial_velocity_sigma_mps * noise.initial_velocity_sigma_mps;
 }
@@ -38,25 +41,28 @@ void KalmanCv::predict(double dt_s) {
   P_ = F * P_ * F.transpose() + processNoise(dt_s);
 }
 
-void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps) {
+void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+                      const std::optional<Mat3>& position_cov_world) {
   const int m = v_world_mps ? 6 : 3;
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 6);
   H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
   Eigen::VectorXd z(m);
   z.head<3>() = p_world;
-  Eigen::VectorXd r_diag(m);
-  r_diag.head<3>().setConstant(noise_.position_sigma_m * noise_.position_sigma_m);
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
+  R.topLeftCorner<3, 3>() = position_cov_world.value_or(Mat3::Identity() * noise_.position_sigma_m *
+                                                        noise_.position_sigma_m);
   if (v_world_mps) {
     z.tail<3>() = *v_world_mps;
-    r_diag.tail<3>().setConstant(noise_.velocity_sigma_mps * noise_.velocity_sigma_mps);
+    R.bottomRightCorner<3, 3>() =
+        Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
   }
   const Eigen::VectorXd y = z - H * x_;
-  const Eigen::MatrixXd S = H * P_ * H.transpose() + Eigen::MatrixXd(r_diag.asDiagonal());
+  const Eigen::MatrixXd S = H * P_ * H.transpose() + R;
   const Eigen::MatrixXd K = P_ * H.transpose() * S.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
   x_ += K * y;
   // Joseph form: stays symmetric positive semi-definite.
   const Mat6 I_KH = Mat6::Identity() - K * H;
-  P_ = I_KH * P_ * I_KH.transpose() + K * Eigen::MatrixXd(r_diag.asDiagonal()) * K.transpose();
+  P_ = I_KH * P_ * I_KH.transpose() + K * R * K.transpose();
 }
 
 void KalmanCv::holdStill() {

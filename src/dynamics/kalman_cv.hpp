@@ -16,7 +16,7 @@ namespace dynanav {
 struct KalmanCvNoise {
   double accel_sigma_mps2 = 1.0;    ///< process noise: unmodelled acceleration
   double position_sigma_m = 0.05;   ///< centre measurement
-  double velocity_sigma_mps = 0.3;  ///< one-frame centroid velocity measurement
+  double velocity_sigma_mps = 0.6;  ///< one-frame centroid velocity measurement
   double initial_velocity_sigma_mps = 1.0;
 };
 
@@ -26,12 +26,16 @@ class KalmanCv {
   using Mat6 = Eigen::Matrix<double, 6, 6>;
 
   KalmanCv() = default;
-  KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise);
+  /// Starts at p_world, with `position_cov_world` (m^2) or the configured isotropic noise.
+  KalmanCv(const Vec3& p_world, const KalmanCvNoise& noise,
+           const std::optional<Mat3>& position_cov_world = std::nullopt);
 
   /// Moves the state dt_s seconds ahead.
   void predict(double dt_s);
-  /// Position measurement, optionally with a velocity measurement.
-  void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps);
+  /// Position measurement, optionally with a velocity measurement; `position_cov_world` (m^2)
+  /// replaces the configured isotropic noise of this one position measurement.
+  void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+              const std::optional<Mat3>& position_cov_world = std::nullopt);
   /// Sets the velocity to zero with a small variance (a static object).
   void holdStill();
 

@@ -27,6 +27,24 @@ std::optional<cv::Rect> trunkBox(const Instance& instance) {
   return cv::boundingRect(corners);
 }
 
+/// Without keypoints: the trunk is about the band from 20 % to 50 % of a person's height below
+/// the top of the head (shoulders to hips of an adult). The height is the box's when the whole
+/// person is in view, else the expected height at its depth, counted from the top of the head
+/// or, with the head out of view, up from the feet.
+std::optional<cv::Rect> trunkBand(const Instance& instance, int image_rows, double height_px) {
+  if (instance.class_name != "person") return std::nullopt;
+  const cv::Rect& b = instance.box;
+  const bool top_in_view = b.y > 1, bottom_in_view = b.y + b.height < image_rows - 1;
+  double top = b.y, height = b.height;
+  if (!(top_in_view && bottom_in_view)) {
+    if (height_px <= 0.0 || (!top_in_view && !bottom_in_view)) return std::nullopt;
+    height = std::max(height_px, double(b.height));
+    if (!top_in_view) top = b.y + b.height - height;
+  }
+  return cv::Rect(b.x, int(std::lround(top + 0.2 * height)), b.width,
+                  int(std::lround(0.3 * height)));
+}
+
 std::vector<cv::Point2f> gridIn(const cv::Mat& labels, uint16_t id, cv::Rect area, int step) {
   std::vector<cv::Point2f> out;
   area &= cv::Rect(0, 0, labels.cols, labels.rows);
@@ -43,22 +61,17 @@ std::vector<cv::Point2f> gridIn(const cv::Mat& labels, uint16_t id, cv::Rect are
 
 }  // namespace
 
-std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
-                                            const SampleOptions& options) {
+ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                const SampleOptions& options) {
   const int step = std::max(1, options.step_px);
   std::vector<cv::Point2f> points;
   if (const auto trunk = trunkBox(instance)) {
     points = gridIn(labels, instance.id, *trunk, step);
-  } else if (instance.class_name == "person" && instance.box.y > 1 &&
-             instance.box.y + instance.box.height < labels.rows - 1) {
-    // No keypoints but the whole person in view: the trunk is about the band from 20 % to 50 %
-    // of the height below the top of the head (shoulders to hips of an adult).
-    const cv::Rect& b = instance.box;
-    points = gridIn(labels, instance.id,
-                    cv::Rect(b.x, b.y + b.height / 5, b.width, b.height * 3 / 10), step);
+  } else if (const auto band = trunkBand(instance, labels.rows, options.person_height_px)) {
+    points = gridIn(labels, instance.id, *band, step);
   }
-  if (int(points.size()) < options.trunk_min_points)
-    points = gridIn(labels, instance.id, instance.box, step);
+  const bool trunk = int(points.size()) >= options.trunk_min_points;
+  if (!trunk) points = gridIn(labels, instance.id, instance.box, step);
   if (options.max_points > 0 && int(points.size()) > options.max_points) {
     std::vector<cv::Point2f> thinned;
     thinned.reserve(size_t(options.max_points));
@@ -66,7 +79,7 @@ std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instanc
     for (int k = 0; k < options.max_points; ++k) thinned.push_back(points[size_t(k * stride)]);
     points = std::move(thinned);
   }
-  return points;
+  return {std::move(points), trunk};
 }
 
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel) {

@@ -17,13 +17,22 @@ struct SampleOptions {
   int step_px = 5;
   int max_points = 400;       ///< the grid is thinned evenly to at most this many
   int trunk_min_points = 20;  ///< fewer inside the trunk: the whole mask
+  /// A person's full height in pixels at its depth (0: unknown): places the trunk band of a
+  /// person whose head or feet are out of view.
+  double person_height_px = 0.0;
 };
 
 /// Grid pixels (every step_px) with label `id`; for people, those of the trunk when that gives
 /// trunk_min_points: inside the box spanned by both shoulders and both hips when keypoints were
-/// found, else the band 20-50 % down a box that is wholly in view.
-std::vector<cv::Point2f> sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
-                                            const SampleOptions& options);
+/// found, else the band 20-50 % of the person's height below the top of the head: the height is
+/// the box's when the box is wholly in view, else options.person_height_px measured from the end
+/// of the box that is in view (the head, or the feet).
+struct ObjectSample {
+  std::vector<cv::Point2f> pixels;
+  bool trunk = false;  ///< a person's trunk (else the whole mask: its centre is not the trunk's)
+};
+ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
+                                const SampleOptions& options);
 
 /// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
 /// false when it leaves the image.

@@ -1,6 +1,7 @@
 #include "dynamics/object_tracker.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 #include "dynamics/object_motion.hpp"
@@ -24,6 +25,35 @@ uint16_t labelAt(const cv::Mat& labels, const Eigen::Vector2d& pixel) {
   const int x = int(std::lround(pixel.x())), y = int(std::lround(pixel.y()));
   if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return 0;
   return labels.at<uint16_t>(y, x);
+}
+
+/// A standing adult's height (m): with the median depth of a person's mask, how tall the whole
+/// person would be in the image when the head or the feet are out of view (trunk band).
+constexpr double kPersonHeightM = 1.7;
+/// Noise (m) of a centre component the visible part does not measure (an object cut by the
+/// image's side: sideways; a person without the trunk in view: the height): a body's size.
+constexpr double kUnmeasuredSigmaM = 1.0;
+
+/// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both).
+int cutSide(const Instance& instance, int image_cols) {
+  const bool left = instance.box.x <= 1;
+  const bool right = instance.box.x + instance.box.width >= image_cols - 1;
+  return left == right ? 0 : (left ? -1 : 1);
+}
+
+double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv::Mat& depth_m,
+                       int step) {
+  std::vector<float> z;
+  const cv::Rect box = instance.box & cv::Rect(0, 0, labels.cols, labels.rows);
+  for (int y = box.y; y < box.y + box.height; y += step)
+    for (int x = box.x; x < box.x + box.width; x += step)
+      if (labels.at<uint16_t>(y, x) == instance.id) {
+        const float d = depth_m.at<float>(y, x);
+        if (std::isfinite(d) && d > 0.f) z.push_back(d);
+      }
+  if (z.empty()) return 0.0;
+  std::nth_element(z.begin(), z.begin() + long(z.size() / 2), z.end());
+  return z[z.size() / 2];
 }
 
 }  // namespace
@@ -128,6 +158,40 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
   return match;
 }
 
+std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
+    const Track& track, const std::vector<Vec3>& p_camera, const Instance* instance,
+    const ObjectTrackerInput& input) const {
+  auto centre = objectCentre(p_camera, config_.depth_band_m,
+                             behindSurface(track.class_name, p_camera, config_));
+  if (!centre) return std::nullopt;
+  // An object cut by the image's left or right edge shows only part of itself: the centre of
+  // what is seen slides sideways with the edge (a walker entering the view would seem to move at
+  // several m/s while the visible part grows). Its depth and height are still measured; its
+  // sideways position (camera x) is not: that component counts as unknown, and the filter keeps
+  // the sideways motion the rigid-motion velocity measures until the object is wholly in view.
+  // Likewise the height of a person of whom only the legs or an arm were sampled (the trunk not
+  // in view): the centre of the whole mask is not the trunk's.
+  const bool cut = instance && cutSide(*instance, input.instances.labels.cols) != 0;
+  const bool no_trunk = instance && track.class_name == "person" && !track.trunk;
+  if (!cut && !no_trunk) return Centre{*centre, std::nullopt};
+  const double s2 = config_.position_sigma_m * config_.position_sigma_m;
+  const double u2 = kUnmeasuredSigmaM * kUnmeasuredSigmaM;
+  const Mat3 cov_camera = Vec3(cut ? u2 : s2, no_trunk ? u2 : s2, s2).asDiagonal();
+  const Mat3 R_world_camera = input.T_world_camera.linear();
+  return Centre{*centre, R_world_camera * cov_camera * R_world_camera.transpose()};
+}
+
+ObjectSample ObjectTracker::samplePixels(const Instance& instance,
+                                         const ObjectTrackerInput& input) const {
+  SampleOptions options{sample_step_px_, config_.max_points, config_.trunk_min_points};
+  if (instance.class_name == "person")
+    if (const double z =
+            medianMaskDepth(instance, input.instances.labels, input.depth_m, 2 * sample_step_px_);
+        z > 0.0)
+      options.person_height_px = kPersonHeightM * input.camera.fy / z;
+  return sampleObjectPixels(input.instances.labels, instance, options);
+}
+
 void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
                          const ObjectTrackerInput& input) const {
   track.pixels.clear();
@@ -206,22 +270,22 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.motion = SE3::Identity();
     }
   }
-  lift(track, kept_pixels, input);
-  const bool thin = double(track.pixels.size()) < config_.replenish_share * track.sampled ||
-                    int(track.pixels.size()) < config_.min_motion_points;
-  if (instance && thin) {
-    lift(track,
-         sampleObjectPixels(input.instances.labels, *instance,
-                            {sample_step_px_, config_.max_points, config_.trunk_min_points}),
-         input);
-    track.sampled = int(track.pixels.size());
+  // The points for the next frame and the centre: sampled afresh from this frame's mask when
+  // the segmenter saw the object (carried points drift over the body, and a track started on a
+  // leg entering the view would keep measuring the leg); the carried ones when it did not.
+  if (instance) {
+    const ObjectSample sample = samplePixels(*instance, input);
+    lift(track, sample.pixels, input);
+    track.trunk = sample.trunk;
+  } else {
+    lift(track, kept_pixels, input);
   }
   std::vector<Vec3> p_camera;
   p_camera.reserve(track.p_world.size());
   for (const Vec3& p : track.p_world) p_camera.push_back(T_camera_world * p);
-  if (const auto centre = objectCentre(p_camera, config_.depth_band_m,
-                                       behindSurface(track.class_name, p_camera, config_)))
-    track.filter.update(input.T_world_camera * *centre, v_measured);
+  if (const auto centre = measureCentre(track, p_camera, instance, input)) {
+    track.filter.update(input.T_world_camera * centre->p_camera, v_measured, centre->cov_world);
+  }
   // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
   if (instance) {
     const bool moving = contains(input.dynamics.moving_ids, instance->id);
@@ -244,20 +308,18 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   t.class_name = instance.class_name;
   t.instance = instance.id;
   t.last_stamp_s = input.stamp_s;
-  lift(t,
-       sampleObjectPixels(input.instances.labels, instance,
-                          {sample_step_px_, config_.max_points, config_.trunk_min_points}),
-       input);
-  t.sampled = int(t.pixels.size());
+  const ObjectSample sample = samplePixels(instance, input);
+  lift(t, sample.pixels, input);
+  t.trunk = sample.trunk;
   const SE3 T_camera_world = input.T_world_camera.inverse();
   std::vector<Vec3> p_camera;
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
-  const auto centre =
-      objectCentre(p_camera, config_.depth_band_m, behindSurface(t.class_name, p_camera, config_));
+  const auto centre = measureCentre(t, p_camera, &instance, input);
   if (!centre) return std::nullopt;
   t.filter = KalmanCv(
-      input.T_world_camera * *centre,
-      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0});
+      input.T_world_camera * centre->p_camera,
+      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0},
+      centre->cov_world);
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
   t.still = moving ? 0 : 1;
   if (contains(input.dynamics.static_ids, instance.id)) t.still = config_.static_after_frames;

@@ -18,6 +18,7 @@
 #include "core/tracked_object.hpp"
 #include "dynamics/frame_dynamics.hpp"
 #include "dynamics/kalman_cv.hpp"
+#include "dynamics/object_points.hpp"
 #include "perception/instances.hpp"
 
 namespace dynanav {
@@ -46,8 +47,8 @@ class ObjectTracker {
     std::string class_name;
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
-    int sampled = 0;                  // points at the last (re)sampling
     uint16_t instance = 0;            // label in the last frame (0: carried)
+    bool trunk = false;               // the points are a person's trunk
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
     int missed = 0;
@@ -65,6 +66,17 @@ class ObjectTracker {
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  struct Centre {
+    Vec3 p_camera;
+    std::optional<Mat3> cov_world;  ///< measurement noise (m^2); none: the configured one
+  };
+  /// The object's centre from its points (camera frame), with the components its visible part
+  /// does not measure marked unknown.
+  std::optional<Centre> measureCentre(const Track& track, const std::vector<Vec3>& p_camera,
+                                      const Instance* instance,
+                                      const ObjectTrackerInput& input) const;
+  /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
+  ObjectSample samplePixels(const Instance& instance, const ObjectTrackerInput& input) const;
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped.
   void lift(Track& track, const std::vector<cv::Point2f>& pixels,
             const ObjectTrackerInput& input) const;

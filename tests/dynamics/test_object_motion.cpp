@@ -128,3 +128,18 @@ TEST(KalmanCv, PositionOnlyUpdatesInferVelocity) {
   }
   EXPECT_NEAR(filter.velocity().x(), 0.8, 0.05);
 }
+
+TEST(KalmanCv, UnknownComponentOfAPositionMeasurementIsNotFollowed) {
+  // A centre whose x is 1 m off but marked unknown (sigma 1 m) moves x little, y normally.
+  KalmanCv filter(Vec3::Zero(), {});
+  KalmanCv isotropic(Vec3::Zero(), {});
+  const Mat3 cov = Vec3(1.0, 0.05 * 0.05, 0.05 * 0.05).asDiagonal();
+  filter.predict(1.0 / 30.0);
+  isotropic.predict(1.0 / 30.0);
+  filter.update(Vec3(1.0, 0.1, 0.0), std::nullopt, cov);
+  isotropic.update(Vec3(1.0, 0.1, 0.0), std::nullopt);
+  EXPECT_LT(filter.position().x(), 0.01);
+  EXPECT_GT(isotropic.position().x(), 0.3);
+  EXPECT_NEAR(filter.position().y(), isotropic.position().y(), 1e-9);
+  EXPECT_LT((filter.covariance() - filter.covariance().transpose()).norm(), 1e-9);
+}

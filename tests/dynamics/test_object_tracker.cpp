@@ -2,6 +2,7 @@
 // ids survive a frame the segmenter misses, new objects get new ids, ended ids are not reused.
 #include <gtest/gtest.h>
 
+#include "dynamics/object_points.hpp"
 #include "dynamics/object_tracker.hpp"
 
 using namespace dynanav;
@@ -33,7 +34,8 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
   f.depth_m = cv::Mat(kH, kW, CV_32F, cv::Scalar(4.0f));
   for (size_t k = 0; k < x0.size(); ++k) {
     const int left = int(std::lround(x0[k]));
-    const cv::Rect box(left, 150, 60, 120);
+    // Cut by the image's edges as a segmenter would see it.
+    const cv::Rect box = cv::Rect(left, 150, 60, 120) & cv::Rect(0, 0, kW, kH);
     for (int y = box.y; y < box.y + box.height; ++y)
       for (int x = box.x; x < box.x + box.width; ++x)
         f.depth_m.at<float>(y, x) =
@@ -129,4 +131,48 @@ TEST(ObjectTracker, StaticObjectHasZeroVelocity) {
   EXPECT_FALSE(out[0].dynamic);
   EXPECT_EQ(out[0].speed_mps, 0.0);
   EXPECT_NEAR(out[0].distance_m, std::hypot(2.08, (230 - 239.5) * 2.08 / 525.0, 0.0), 0.2);
+}
+
+TEST(ObjectTracker, ObjectEnteringAtTheImageSideKeepsItsSpeed) {
+  // The object slides in from the left edge: while it is cut, the centre of its visible part
+  // moves at half its speed (the edge holds the left end). That sideways centre is unknown to the
+  // filter; the rigid motion of its points gives the speed throughout.
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  float x = -45.f;
+  std::vector<TrackedObject> out;
+  for (int i = 0; i < 45; ++i) {
+    out = step(tracker, frame({x}, {true}, i > 0), i);
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i >= 10) {
+      EXPECT_NEAR(out[0].speed_mps, expected, 0.12) << "frame " << i;
+    }
+    x += kPixelsPerFrame;
+  }
+  // Wholly in view since frame 15: the centre is the object's.
+  const double centre_x_m = (x - kPixelsPerFrame + 30.0 - 319.5) * 2.03 / 525.0;
+  EXPECT_NEAR(out[0].p_world.x(), centre_x_m, 0.05);
+}
+
+TEST(ObjectPoints, TrunkBandOfAPersonWhoseFeetAreOutOfView) {
+  // A person 400 px tall at its depth whose box (top at row 200) is cut by the image's bottom:
+  // the trunk is 20-50 % of the whole height below the head (rows 280-400), not of the box.
+  Instances instances = Instances::none(cv::Size(kW, kH));
+  Instance person;
+  person.id = 1;
+  person.class_name = "person";
+  person.box = cv::Rect(300, 200, 60, kH - 200);
+  instances.labels(person.box).setTo(1);
+  SampleOptions options;
+  options.person_height_px = 400.0;
+  const ObjectSample sample = sampleObjectPixels(instances.labels, person, options);
+  ASSERT_TRUE(sample.trunk);
+  ASSERT_FALSE(sample.pixels.empty());
+  for (const cv::Point2f& p : sample.pixels) {
+    EXPECT_GE(p.y, 280.f);
+    EXPECT_LT(p.y, 400.f);
+  }
+  // Without the height the cut box gives no band: the whole mask, not called the trunk.
+  const ObjectSample whole = sampleObjectPixels(instances.labels, person, SampleOptions{});
+  EXPECT_FALSE(whole.trunk);
 }
