@@ -12,6 +12,7 @@ packages=(
   clang libclang-rt-14-dev   # the fuzz preset (libFuzzer), scripts/fuzz.sh
   opencv-doc
   liboctomap-dev chromium   # static map (issue 15); report.html's browser test
+  libopenni2-dev            # live OpenNI2 cameras and .oni playback (issue 16); optional in CMake
   python3-numpy python3-opencv openssl   # tools/tfjs_to_pb, its tests, fetch_models.sh's checks
 )
 # scripts/fetch_models.sh gets the models with npm; a node.js from elsewhere (e.g. NodeSource)
