@@ -1,8 +1,7 @@
 // The OpenNI2 adapter behind RgbdDevice (compiled only when CMake found libopenni2; otherwise
 // openni2_missing.cpp says so). Live: colour RGB888 and depth in 1 mm (or 100 µm) units, depth
-// registered to colour and frame-synced when the device can. An .oni recording plays in
-// OpenNI2's manual mode (a frame becomes available when it is read), so playback is as fast as
-// the pipeline and never drops; the end of the recording ends the stream.
+// registered to colour and frame-synced when the device can. An .oni recording plays at its
+// recorded pace, as the camera delivered it; the end of the recording ends the stream.
 #ifdef DYNANAV_HAVE_OPENNI2
 #include <OpenNI.h>
 #include <dlfcn.h>
@@ -12,6 +11,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <mutex>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -25,14 +26,30 @@ namespace {
 
 constexpr int kWaitMs = 2000;  // a live camera delivers every 33 ms; 2 s of silence is a fault
 
-/// OpenNI2 keeps one context per process. It is initialised once and never shut down: its
-/// drivers' threads can outlive OpenNI::shutdown() (the DummyDevice driver of OpenNI2 2.2
-/// segfaults when shutdown unloads it), and devices and streams are closed one by one anyway.
-void initialiseOnce() {
-  static const openni::Status status = openni::OpenNI::initialize();
-  static const std::string error = openni::OpenNI::getExtendedError();
-  if (status != openni::STATUS_OK) throw InputError("OpenNI2", "cannot initialise: " + error);
-}
+/// OpenNI2 keeps one context per process: initialised with the first device, shut down with
+/// the last (its drivers allocate at initialise and free only at shutdown; ASan's leak check
+/// found that). Devices and streams are closed before it goes.
+class OpenNiContext {
+ public:
+  static std::shared_ptr<OpenNiContext> acquire() {
+    static std::mutex mutex;
+    static std::weak_ptr<OpenNiContext> current;
+    std::lock_guard lock(mutex);
+    if (auto context = current.lock()) return context;
+    if (openni::OpenNI::initialize() != openni::STATUS_OK) {
+      const std::string error = openni::OpenNI::getExtendedError();
+      openni::OpenNI::shutdown();
+      throw InputError("OpenNI2", "cannot initialise: " + error);
+    }
+    auto context = std::shared_ptr<OpenNiContext>(new OpenNiContext);
+    current = context;
+    return context;
+  }
+  ~OpenNiContext() { openni::OpenNI::shutdown(); }
+
+ private:
+  OpenNiContext() = default;
+};
 
 /// Where OpenNI2 looks for its drivers: OpenNI.ini's [Drivers] Repository, else OpenNI2/Drivers
 /// beside libOpenNI2.so (OpenNI2 2.2's rule), with the driver libraries found there.
@@ -88,8 +105,8 @@ const openni::VideoMode* findMode(const openni::SensorInfo& sensor, openni::Pixe
 
 class OpenNi2Device final : public RgbdDevice {
  public:
-  explicit OpenNi2Device(const RgbdDeviceRequest& request) : where_(describe(request)) {
-    initialiseOnce();
+  explicit OpenNi2Device(const RgbdDeviceRequest& request)
+      : where_(describe(request)), context_(OpenNiContext::acquire()) {
     const char* uri = request.uri.empty() ? openni::ANY_DEVICE : request.uri.c_str();
     if (device_.open(uri) != openni::STATUS_OK) {
       const std::string error = openni::OpenNI::getExtendedError();
@@ -114,16 +131,16 @@ class OpenNi2Device final : public RgbdDevice {
     if (request.sync_depth_and_colour && !info_.is_file) device_.setDepthColorSyncEnabled(true);
     info_.synced = device_.getDepthColorSyncEnabled();
     if (info_.is_file) {
-      // Manual speed: the next frame is there when we read it, so nothing is ever dropped.
       openni::PlaybackControl* playback = device_.getPlaybackControl();
-      playback->setSpeed(-1.0f);
       playback->setRepeatEnabled(false);
-      info_.frames =
-          std::min(playback->getNumberOfFrames(colour_), playback->getNumberOfFrames(depth_));
+      // A recording that was not closed properly says -1: its end is found by waiting.
+      info_.frames = std::max(
+          0, std::min(playback->getNumberOfFrames(colour_), playback->getNumberOfFrames(depth_)));
+      // At the recorded pace, as the camera delivered it. (OpenNI2 2.2's manual speed, -1,
+      // made readFrame() block for ever here, with and without waiting for the stream first.)
+      playback->setSpeed(1.0f);
     }
-    if (colour_.start() != openni::STATUS_OK || depth_.start() != openni::STATUS_OK)
-      throw InputError(
-          where_, std::string("cannot start the streams: ") + openni::OpenNI::getExtendedError());
+
     checkFormats();
   }
 
@@ -138,7 +155,15 @@ class OpenNi2Device final : public RgbdDevice {
   [[nodiscard]] const RgbdDeviceInfo& info() const override { return info_; }
 
   std::optional<RawRgbdFrame> read() override {
-    if (info_.is_file && read_ >= info_.frames) return std::nullopt;
+    // Streams start at the first read, not at open: a recording plays from its start then,
+    // instead of running past while the pipeline loads its models.
+    if (!started_) {
+      started_ = true;
+      if (colour_.start() != openni::STATUS_OK || depth_.start() != openni::STATUS_OK)
+        throw InputError(
+            where_, std::string("cannot start the streams: ") + openni::OpenNI::getExtendedError());
+    }
+    if (info_.is_file && info_.frames > 0 && read_ >= info_.frames) return std::nullopt;
     openni::VideoFrameRef depth, colour;
     if (!readFrame(depth_, depth, "depth") || !readFrame(colour_, colour, "colour"))
       return std::nullopt;
@@ -238,10 +263,12 @@ class OpenNi2Device final : public RgbdDevice {
   }
 
   std::string where_;
+  std::shared_ptr<OpenNiContext> context_;  // first member to come, last to go
   openni::Device device_;
   openni::VideoStream colour_, depth_;
   RgbdDeviceInfo info_;
   int read_ = 0;  // pairs delivered
+  bool started_ = false;
 };
 
 }  // namespace

@@ -99,14 +99,4 @@ inline SE3 anchoredPose(const KeyFrame& reference, const SE3& T_frame_reference)
   return T * kf->T_camera_world();
 }
 
-/// Moves an anchor (a frame at T_frame_reference relative to `reference`) off culled keyframes
-/// onto the nearest live ancestor, so that anchoredPose() gives the same pose and nothing keeps
-/// the culled keyframes (their features, words and points) alive.
-inline void reanchorOnLiveKeyFrame(std::shared_ptr<KeyFrame>& reference, SE3& T_frame_reference) {
-  while (reference->bad && reference->parent_when_culled) {
-    T_frame_reference = T_frame_reference * reference->T_camera_parent;
-    reference = std::shared_ptr<KeyFrame>(reference->parent_when_culled);
-  }
-}
-
 }  // namespace dynanav

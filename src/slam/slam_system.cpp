@@ -88,16 +88,6 @@ void SlamSystem::finishFrame(const Frame& frame, const TrackOutcome& outcome) {
   std::unique_lock lock(map_->mutex());  // the reference's pose may be under local BA
   anchors_.push_back({frame.stamp_s, outcome.reference,
                       frame.T_camera_world * outcome.reference->T_world_camera()});
-  // Amortised: a pass over the anchors every 64 tracked frames.
-  if (anchors_.size() % 64 == 0) reanchorOffCulledKeyFrames();
-}
-
-void SlamSystem::reanchorOffCulledKeyFrames() {
-  // A culled keyframe keeps its pose relative to its parent (T_camera_parent), which is all a
-  // frame anchored on it needs: anchoredPose() walks the same chain at the end. Walking it now
-  // gives the same pose and lets the culled keyframe go (a looped hour-long run would otherwise
-  // keep every culled keyframe's features alive through the trajectory's anchors).
-  for (FrameAnchor& a : anchors_) reanchorOnLiveKeyFrame(a.reference, a.T_frame_reference);
 }
 
 void SlamSystem::finish() {

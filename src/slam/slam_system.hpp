@@ -89,9 +89,6 @@ class SlamSystem {
     SE3 T_frame_reference;
   };
   std::vector<FrameAnchor> anchors_;  ///< one per tracked frame
-  /// Moves anchors off culled keyframes onto their nearest live ancestor (the same pose), so a
-  /// culled keyframe, its features, words and points are freed; the caller holds the map lock.
-  void reanchorOffCulledKeyFrames();
 };
 
 }  // namespace dynanav

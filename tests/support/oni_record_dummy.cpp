@@ -42,6 +42,6 @@ int main(int argc, char** argv) {
   colour.destroy();
   device.close();
   // No OpenNI::shutdown(): it unloads the DummyDevice driver while the driver's frame thread
-  // still runs, which crashes (OpenNI2 2.2); dynanav's adapter never shuts OpenNI2 down either.
+  // still runs, which crashes (OpenNI2 2.2). The process ends here anyway.
   return 0;
 }
