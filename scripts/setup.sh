@@ -13,6 +13,7 @@ packages=(
   opencv-doc
   liboctomap-dev chromium   # static map (issue 15); report.html's browser test
   libespeak-ng-dev espeak-ng-data libopenal-dev libopenal-data libsndfile1-dev   # speech, HRTF audio (issue 14)
+  libopenni2-dev            # live OpenNI2 cameras and .oni playback (issue 16); optional in CMake
   python3-numpy python3-opencv openssl   # tools/tfjs_to_pb, its tests, fetch_models.sh's checks
 )
 # scripts/fetch_models.sh gets the models with npm; a node.js from elsewhere (e.g. NodeSource)

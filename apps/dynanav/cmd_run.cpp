@@ -9,6 +9,7 @@
 #include "apps/dynanav/commands.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "io/camera_yaml.hpp"
 #include "pipeline/run_sequence.hpp"
 
 namespace dynanav::cli {
@@ -18,6 +19,7 @@ struct RunFlags {
   std::string sequence_dir;
   std::string out_dir;
   std::string config_path;
+  std::string camera_path;  // --camera: intrinsics of a device, or of a folder without its own
   std::string dynamic;
   std::string blackout;
   std::string segmenter;  // issue 7 (dynamics): segmenter, models and segmentation rate
@@ -39,6 +41,10 @@ int runCommand(const RunFlags& flags) {
   options.sequence_dir = flags.sequence_dir;
   options.out_dir = flags.out_dir;
   if (!flags.config_path.empty()) options.config = Config::load(flags.config_path);
+  if (!flags.camera_path.empty()) {
+    options.fallback_camera = loadCameraYaml(flags.camera_path);
+    options.camera_origin = flags.camera_path;
+  }
   if (!flags.dynamic.empty()) options.config.run.dynamic = flags.dynamic == "on";
   if (!flags.segmenter.empty()) options.config.run.segmenter = flags.segmenter;  // issue 7
   if (!flags.models.empty()) options.config.perception.models_dir = flags.models;
@@ -87,6 +93,9 @@ int runCommand(const RunFlags& flags) {
   const RunSummary summary = runSequence(options);
   if (summary.interrupted_by_signal)
     return 128 + summary.interrupted_by_signal;  // 130 SIGINT, 143 SIGTERM
+  if (!summary.source_failure.empty())
+    throw InputError("", summary.source_failure + " (the outputs hold the " +
+                             std::to_string(summary.frames) + " frames processed before)");
   if (summary.frames == 0)
     throw InputError(flags.sequence_dir, "no frame could be read: all " +
                                              std::to_string(summary.skipped) +
@@ -108,10 +117,15 @@ void registerRun(CLI::App& root, Action& chosen) {
   auto* sub = root.add_subcommand(
       "run", "Track a TUM-layout RGB-D sequence; write trajectory, keyframes, stats");
   sub->add_option("SEQ_DIR", flags->sequence_dir,
-                  "sequence folder (rgb.txt, depth.txt, rgb/, depth/)")
+                  "sequence folder (rgb.txt, depth.txt, rgb/, depth/), openni://[URI] (a live "
+                  "OpenNI2 camera; openni:// = any) or FILE.oni (a recording)")
       ->required();
   sub->add_option("--out", flags->out_dir, "output folder")->required();
   sub->add_option("--config", flags->config_path, "YAML config (unknown keys are errors)");
+  sub->add_option("--camera", flags->camera_path,
+                  "camera.yaml with the intrinsics of an openni:// or .oni input (default: "
+                  "camera.yaml beside the .oni, else the device's field of view) or of a folder "
+                  "that has none");
   sub->add_option("--dynamic", flags->dynamic,
                   "on|off: handle moving objects (off = plain SLAM baseline)")
       ->check(CLI::IsMember({"on", "off"}));

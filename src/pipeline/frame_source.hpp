@@ -1,7 +1,7 @@
 #pragma once
 // Where frames come from (DESIGN.md §1, FrameSource): a TUM/Bonn folder, the simulator's output
-// (the same layout), later a live camera. A source yields frames in order; frames it cannot read
-// are skipped, logged and counted, never fatal.
+// (the same layout), an OpenNI2 camera or .oni recording (device_source.hpp). A source yields
+// frames in order; frames it cannot read are skipped, logged and counted, never fatal.
 #include <algorithm>
 #include <filesystem>
 #include <future>
@@ -29,6 +29,10 @@ class FrameSource {
   [[nodiscard]] virtual const PinholeCamera& camera() const = 0;
   /// For logs and errors: where the frames come from.
   [[nodiscard]] virtual std::string describe() const = 0;
+  /// For the log: where the intrinsics came from ("camera.yaml", "device field of view", ...).
+  [[nodiscard]] virtual std::string cameraSource() const { return "the source"; }
+  /// Why the frames stopped before their end ("" = they did not; a signal is not a failure).
+  [[nodiscard]] virtual std::string failure() const { return {}; }
 };
 
 struct SequenceSourceOptions {
@@ -54,6 +58,7 @@ class SequenceSource final : public FrameSource {
   [[nodiscard]] int skipped() const override { return skipped_; }
   [[nodiscard]] const PinholeCamera& camera() const override { return sequence_.camera(); }
   [[nodiscard]] std::string describe() const override;
+  [[nodiscard]] std::string cameraSource() const override { return sequence_.cameraSource(); }
   [[nodiscard]] const TumSequence& sequence() const { return sequence_; }
 
  private:

@@ -17,6 +17,7 @@
 #include "pipeline/frame_source.hpp"
 #include "pipeline/map_sink.hpp"
 #include "pipeline/objects_sink.hpp"
+#include "pipeline/open_source.hpp"
 #include "pipeline/realtime_runner.hpp"
 #include "pipeline/report_sink.hpp"
 #include "pipeline/run_outputs.hpp"
@@ -48,8 +49,10 @@ std::string modeName(const RunConfig& run) {
 }  // namespace
 
 RunSummary runSequence(const RunOptions& options) {
-  SequenceSource source({options.sequence_dir, options.config.io, options.fallback_camera,
-                         options.blackout, options.max_frames, options.passes});
+  const std::unique_ptr<FrameSource> source_owner = openFrameSource(
+      {options.sequence_dir.string(), options.config.io, options.fallback_camera,
+       options.camera_origin, options.blackout, options.max_frames, options.passes});
+  FrameSource& source = *source_owner;
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec)
@@ -57,8 +60,8 @@ RunSummary runSequence(const RunOptions& options) {
   if (const int removed = removeEarlierRunOutputs(options.out_dir); removed > 0)
     spdlog::info("{}: replaced {} files of an earlier run", options.out_dir.string(), removed);
   writeTextFile(options.out_dir / "config_used.yaml", options.config.toYaml());
-  spdlog::info("sequence {}: {} frames, camera {} (from {})", source.describe(),
-               source.sequence().size(), source.camera().name, source.sequence().cameraSource());
+  spdlog::info("input {}: {} frames, camera {} (from {})", source.describe(), source.expected(),
+               source.camera().name, source.cameraSource());
 
   const RunConfig& run = options.config.run;
   // Real time: our threads are the parallelism (segmenter, tracking, mapping); OpenCV's pool
@@ -109,6 +112,7 @@ RunSummary runSequence(const RunOptions& options) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.skipped = source.skipped();
+  summary.source_failure = source.failure();
   summary.interrupted_by_signal = interruptSignal();
   if (summary.interrupted_by_signal)
     spdlog::warn("interrupted by signal {} after {} frames: writing what the run has",

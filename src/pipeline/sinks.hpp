@@ -3,6 +3,7 @@
 // processed frame in order, then the end of the run once the map is final.
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "assist/audio_feedback.hpp"
@@ -19,8 +20,9 @@ struct RunSummary {
   int frames = 0;  ///< processed
   int tracked = 0;
   int lost = 0;
-  int skipped = 0;     ///< unreadable frames (the source's count)
-  size_t dropped = 0;  ///< real time: frames dropped because the system was behind
+  int skipped = 0;             ///< unreadable frames (the source's count)
+  std::string source_failure;  ///< why the frames stopped early (a camera that failed), or ""
+  size_t dropped = 0;          ///< real time: frames dropped because the system was behind
   bool initialised = false;
   int interrupted_by_signal =
       0;  ///< SIGINT/SIGTERM/SIGHUP ended the run early (0 = ran to the end)

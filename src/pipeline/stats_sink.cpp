@@ -141,6 +141,7 @@ void StatsSink::finish(const RunEnd& end) {
   nlohmann::json stats = {
       {"mode", end.mode},
       {"interrupted", s.interrupted_by_signal != 0},
+      {"source_failure", s.source_failure},
       {"frames", s.frames},
       {"tracked", s.tracked},
       {"lost", s.lost},

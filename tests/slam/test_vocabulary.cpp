@@ -1,6 +1,7 @@
 // Vocabulary: training, TF-IDF bag of words, L1 score, direct index, file round trip and checks.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -61,9 +62,7 @@ TEST(KMajorityTree, SeparatesObviousClustersAndIsDeterministic) {
   // Three clusters around far-apart centres, 2 flipped bits each.
   std::vector<Descriptor256> data;
   cv::RNG rng(5);
-  const Descriptor256 centres[3] = {{{0, 0, 0, 0}},
-                                    {{~0ull, ~0ull, 0, 0}},
-                                    {{0, 0, ~0ull, ~0ull}}};
+  const Descriptor256 centres[3] = {{{0, 0, 0, 0}}, {{~0ull, ~0ull, 0, 0}}, {{0, 0, ~0ull, ~0ull}}};
   for (int i = 0; i < 300; ++i) {
     Descriptor256 d = centres[i % 3];
     for (int f = 0; f < 2; ++f) {
@@ -130,7 +129,8 @@ TEST_F(VocabularyTest, PerturbedViewScoresHighestWithItsOwnImage) {
   for (size_t i = 0; i < places.size(); ++i) vocabulary_->transform((*descriptors_)[i], places[i]);
   for (int i : {0, 5, 13, 23}) {
     cv::Mat d;
-    extractor.extract(test::perturbedView(test::texturedImage(640, 480, 100 + i), 4.0, 1.05, {8, -5}, i), kps, d);
+    extractor.extract(
+        test::perturbedView(test::texturedImage(640, 480, 100 + i), 4.0, 1.05, {8, -5}, i), kps, d);
     BowVector query;
     vocabulary_->transform(d, query);
     size_t best = 0;
@@ -167,17 +167,21 @@ TEST_F(VocabularyTest, DirectIndexMatchingFindsTrueCorrespondences) {
   for (const auto& m : matches) {
     ++used_b[m.trainIdx];
     const cv::Point2f p = ka[m.queryIdx].pt;
-    const cv::Point2d expected(warp.at<double>(0, 0) * p.x + warp.at<double>(0, 1) * p.y + warp.at<double>(0, 2),
-                               warp.at<double>(1, 0) * p.x + warp.at<double>(1, 1) * p.y + warp.at<double>(1, 2));
-    if (cv::norm(cv::Point2d(kb[m.trainIdx].pt) - expected) < 2.0 * extractor.scaleFactors()[ka[m.queryIdx].octave] + 1.0)
+    const cv::Point2d expected(
+        warp.at<double>(0, 0) * p.x + warp.at<double>(0, 1) * p.y + warp.at<double>(0, 2),
+        warp.at<double>(1, 0) * p.x + warp.at<double>(1, 1) * p.y + warp.at<double>(1, 2));
+    if (cv::norm(cv::Point2d(kb[m.trainIdx].pt) - expected) <
+        2.0 * extractor.scaleFactors()[ka[m.queryIdx].octave] + 1.0)
       ++correct;
     EXPECT_LE(m.distance, 50.0f);
   }
   EXPECT_EQ(*std::max_element(used_b.begin(), used_b.end()), 1) << "one A feature per B feature";
-  EXPECT_GE(correct, static_cast<int>(matches.size()) * 9 / 10) << correct << " of " << matches.size();
+  EXPECT_GE(correct, static_cast<int>(matches.size()) * 9 / 10)
+      << correct << " of " << matches.size();
 
   // Only usable A features take part.
-  const auto even = matchByDirectIndex(fa, da, ka, fb, db, kb, {}, [](int a) { return a % 2 == 0; });
+  const auto even =
+      matchByDirectIndex(fa, da, ka, fb, db, kb, {}, [](int a) { return a % 2 == 0; });
   EXPECT_FALSE(even.empty());
   for (const auto& m : even) EXPECT_EQ(m.queryIdx % 2, 0);
   // The orientation check drops matches that disagree with the dominant rotation.
@@ -196,7 +200,8 @@ TEST_F(VocabularyTest, SaveLoadRoundTripIsExact) {
   ASSERT_EQ(loaded.words(), vocabulary_->words());
   for (size_t w = 0; w < loaded.words(); ++w) {
     ASSERT_EQ(loaded.weight(static_cast<WordId>(w)), vocabulary_->weight(static_cast<WordId>(w)));
-    ASSERT_EQ(loaded.wordDescriptor(static_cast<WordId>(w)), vocabulary_->wordDescriptor(static_cast<WordId>(w)));
+    ASSERT_EQ(loaded.wordDescriptor(static_cast<WordId>(w)),
+              vocabulary_->wordDescriptor(static_cast<WordId>(w)));
   }
   BowVector a, b;
   FeatureVector fa, fb;
@@ -212,7 +217,8 @@ void expectRejected(const std::string& path, const std::function<void(std::strin
   std::string bytes = test::readFile(path);
   edit(bytes);
   const std::string bad = path + ".bad";
-  std::ofstream(bad, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(bad, std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   try {
     Vocabulary::load(bad);
     ADD_FAILURE() << "accepted a file with " << reason;
@@ -225,13 +231,36 @@ TEST_F(VocabularyTest, BadFilesAreRejectedWithTheirName) {
   const auto dir = test::scratchDir("vocabulary_bad");
   const std::string path = (dir / "voc.dnvoc").string();
   vocabulary_->save(path);
-  expectRejected(path, [](std::string& b) { b.resize(b.size() / 2); }, "a truncated body");
-  expectRejected(path, [](std::string& b) { b.resize(10); }, "a truncated header");
-  expectRejected(path, [](std::string& b) { b[0] = 'X'; }, "wrong magic");
-  expectRejected(path, [](std::string& b) { b[8] = 9; }, "an unknown version");
-  expectRejected(path, [](std::string& b) { b[b.size() / 2] ^= 0x10; }, "a flipped bit");
-  expectRejected(path, [](std::string& b) { b.clear(); }, "no bytes");
+  expectRejected(
+      path, [](std::string& b) { b.resize(b.size() / 2); }, "a truncated body");
+  expectRejected(
+      path, [](std::string& b) { b.resize(10); }, "a truncated header");
+  expectRejected(
+      path, [](std::string& b) { b[0] = 'X'; }, "wrong magic");
+  expectRejected(
+      path, [](std::string& b) { b[8] = 9; }, "an unknown version");
+  expectRejected(
+      path, [](std::string& b) { b[b.size() / 2] ^= 0x10; }, "a flipped bit");
+  expectRejected(
+      path, [](std::string& b) { b.clear(); }, "no bytes");
   EXPECT_THROW(Vocabulary::load((dir / "missing.dnvoc").string()), InputError);
+}
+
+// An endless or special file was read until memory ran out (/dev/zero) or blocked for ever (a
+// FIFO with no writer); a huge file was read whole. Each is refused before a byte is read.
+TEST(VocabularyFile, SpecialAndHugeFilesAreRefusedNamingThem) {
+  const auto dir = test::scratchDir("vocabulary_special");
+  const std::string fifo = (dir / "fifo.dnvoc").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string huge = (dir / "huge.dnvoc").string();
+  std::ofstream(huge).put('D');
+  std::filesystem::resize_file(huge, uint64_t{1} << 30);  // sparse: no disk used
+  for (const std::string& path : {std::string("/dev/zero"), fifo, dir.string(), huge}) {
+    const std::string message = test::errorOf([&] { (void)Vocabulary::load(path); });
+    EXPECT_NE(message.find(path), std::string::npos) << path << ": " << message;
+  }
+  EXPECT_NE(test::errorOf([&] { (void)Vocabulary::load(huge); }).find("larger than"),
+            std::string::npos);
 }
 
 }  // namespace

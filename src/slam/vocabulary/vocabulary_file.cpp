@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -20,16 +21,23 @@ static_assert(std::endian::native == std::endian::little, "the file format is li
 constexpr char kMagic[8] = {'D', 'N', 'V', 'O', 'C', 'A', 'B', '1'};
 constexpr uint32_t kVersion = 1;
 constexpr uint32_t kMaxSourceBytes = 1 << 16;
+// ORB-SLAM's k = 10, L = 6 tree (1.1 million nodes, 36 bytes each) is 40 MB; four times that is
+// more than any tree this format is meant for.
+constexpr uint64_t kMaxFileBytes = uint64_t{160} << 20;
 
 uint64_t fnv1a(const char* data, size_t size) {
   uint64_t h = 0xCBF29CE484222325ull;
-  for (size_t i = 0; i < size; ++i) h = (h ^ static_cast<unsigned char>(data[i])) * 0x100000001B3ull;
+  for (size_t i = 0; i < size; ++i)
+    h = (h ^ static_cast<unsigned char>(data[i])) * 0x100000001B3ull;
   return h;
 }
 
 class Writer {
  public:
-  template <class T> void put(const T& value) { putBytes(&value, sizeof(T)); }
+  template <class T>
+  void put(const T& value) {
+    putBytes(&value, sizeof(T));
+  }
   void putBytes(const void* p, size_t n) { bytes_.append(static_cast<const char*>(p), n); }
   std::string& bytes() { return bytes_; }
 
@@ -41,7 +49,8 @@ class Writer {
 class Reader {
  public:
   Reader(const std::string& bytes, std::string path) : bytes_(bytes), path_(std::move(path)) {}
-  template <class T> T get(const char* what) {
+  template <class T>
+  T get(const char* what) {
     T value;
     getBytes(&value, sizeof(T), what);
     return value;
@@ -92,15 +101,32 @@ void Vocabulary::save(const std::string& path) const {
 }
 
 Vocabulary Vocabulary::load(const std::string& path) {
+  // Only a regular file of bounded size is read: /dev/zero, a FIFO or a terminal would be read
+  // forever (or block), a huge file would be read into memory whole.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw InputError(path, "vocabulary file not found" + (ec ? ": " + ec.message() : ""));
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(path, "the vocabulary is not a regular file (a device, FIFO or folder)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(path, "cannot read the vocabulary file: " + ec.message());
+  if (size > kMaxFileBytes)
+    throw InputError(path, "vocabulary file of " + std::to_string(size) + " bytes is larger than " +
+                               std::to_string(kMaxFileBytes) + " (not a dynanav vocabulary)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the vocabulary file");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes(size, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  if (static_cast<uint64_t>(in.gcount()) != size || in.peek() != std::char_traits<char>::eof())
+    throw InputError(path, "the vocabulary file changed size while it was read");
   Reader r(bytes, path);
   char magic[8];
   r.getBytes(magic, sizeof(magic), "the header");
   if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) r.fail("wrong magic bytes");
   if (const auto version = r.get<uint32_t>("the header"); version != kVersion)
-    r.fail("format version " + std::to_string(version) + ", this build reads " + std::to_string(kVersion));
+    r.fail("format version " + std::to_string(version) + ", this build reads " +
+           std::to_string(kVersion));
   Vocabulary v;
   v.info_.branching = static_cast<int>(r.get<uint32_t>("the header"));
   v.info_.levels = static_cast<int>(r.get<uint32_t>("the header"));
@@ -131,7 +157,8 @@ Vocabulary Vocabulary::load(const std::string& path) {
     if (!std::isfinite(idf) || idf < 0.0f) r.fail("a word weight is negative or not finite");
   }
   const size_t hashed = r.offset();
-  if (r.get<uint64_t>("the checksum") != fnv1a(bytes.data(), hashed)) r.fail("checksum mismatch (corrupt file)");
+  if (r.get<uint64_t>("the checksum") != fnv1a(bytes.data(), hashed))
+    r.fail("checksum mismatch (corrupt file)");
   if (const std::string problem = v.index(); !problem.empty()) r.fail(problem);
   if (v.words() != n_words) r.fail("word count does not match the tree");
   return v;

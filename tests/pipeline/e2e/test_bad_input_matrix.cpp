@@ -53,6 +53,10 @@ TEST(BadInputMatrix, RunOptions) {
       {run + " --blackout x", "--blackout"},
       {run + " --deterministic --realtime", "--deterministic"},
       {run + " --unpaced", "--unpaced"},
+      {run + " --camera /nonexistent/cam.yaml", "/nonexistent/cam.yaml"},
+      {run + " --camera " + (dir / "a_file").string(), "a_file"},
+      {"run " + (dir / "missing.oni").string() + out, "missing.oni"},
+      {"run openni:// --passes 3" + out, "--passes"},
   });
 }
 
@@ -173,6 +177,7 @@ TEST(BadInputMatrix, OtherSubcommandOptions) {
        "/nonexistent/models"},
       {"vocabulary info /nonexistent/v.dnvoc", "/nonexistent/v.dnvoc"},
       {"vocabulary info " + (dir / "short.dnvoc").string(), "short.dnvoc"},
+      {"vocabulary info /dev/zero", "/dev/zero"},  // was read for ever
       {"vocabulary train /nonexistent/images --out " + (dir / "v").string(), "/nonexistent/images"},
       {"vocabulary train " + (seq / "rgb").string() + " --out " + (dir / "v").string() + " --k 1",
        "--k"},

@@ -1,0 +1,285 @@
+// The OpenNI2 adapter behind RgbdDevice (compiled only when CMake found libopenni2; otherwise
+// openni2_missing.cpp says so). Live: colour RGB888 and depth in 1 mm (or 100 µm) units, depth
+// registered to colour and frame-synced when the device can. An .oni recording plays at its
+// recorded pace, as the camera delivered it; the end of the recording ends the stream.
+#ifdef DYNANAV_HAVE_OPENNI2
+#include <OpenNI.h>
+#include <dlfcn.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/rgbd_device.hpp"
+
+namespace fs = std::filesystem;
+
+namespace dynanav {
+namespace {
+
+constexpr int kWaitMs = 2000;  // a live camera delivers every 33 ms; 2 s of silence is a fault
+
+/// OpenNI2 keeps one context per process: initialised with the first device, shut down with
+/// the last (its drivers allocate at initialise and free only at shutdown; ASan's leak check
+/// found that). Devices and streams are closed before it goes.
+class OpenNiContext {
+ public:
+  static std::shared_ptr<OpenNiContext> acquire() {
+    static std::mutex mutex;
+    static std::weak_ptr<OpenNiContext> current;
+    std::lock_guard lock(mutex);
+    if (auto context = current.lock()) return context;
+    if (openni::OpenNI::initialize() != openni::STATUS_OK) {
+      const std::string error = openni::OpenNI::getExtendedError();
+      openni::OpenNI::shutdown();
+      throw InputError("OpenNI2", "cannot initialise: " + error);
+    }
+    auto context = std::shared_ptr<OpenNiContext>(new OpenNiContext);
+    current = context;
+    return context;
+  }
+  ~OpenNiContext() { openni::OpenNI::shutdown(); }
+
+ private:
+  OpenNiContext() = default;
+};
+
+/// Where OpenNI2 looks for its drivers: OpenNI.ini's [Drivers] Repository, else OpenNI2/Drivers
+/// beside libOpenNI2.so (OpenNI2 2.2's rule), with the driver libraries found there.
+std::string driversFound() {
+  fs::path repository = "OpenNI2/Drivers";
+  std::ifstream ini("/etc/openni2/OpenNI.ini");
+  for (std::string line; std::getline(ini, line);)
+    if (line.rfind("Repository=", 0) == 0) repository = line.substr(11);
+  if (repository.is_relative()) {
+    Dl_info where{};
+    if (dladdr(reinterpret_cast<void*>(&oniInitialize), &where) && where.dli_fname)
+      repository = fs::path(where.dli_fname).parent_path() / repository;
+  }
+  std::vector<std::string> drivers;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(repository, ec))
+    if (entry.path().extension() == ".so") drivers.push_back(entry.path().filename().string());
+  std::sort(drivers.begin(), drivers.end());
+  std::string text = "OpenNI2 " + std::to_string(ONI_VERSION_MAJOR) + "." +
+                     std::to_string(ONI_VERSION_MINOR) + " drivers in " + repository.string() +
+                     ": ";
+  if (drivers.empty()) return text + "none";
+  for (size_t i = 0; i < drivers.size(); ++i) text += (i ? ", " : "") + drivers[i];
+  return text;
+}
+
+std::string devicesEnumerated() {
+  openni::Array<openni::DeviceInfo> list;
+  openni::OpenNI::enumerateDevices(&list);
+  if (list.getSize() == 0) return "no device enumerated";
+  std::string text = std::to_string(list.getSize()) + " device(s) enumerated:";
+  for (int i = 0; i < list.getSize(); ++i)
+    text += std::string(" ") + list[i].getUri() + " (" + list[i].getVendor() + " " +
+            list[i].getName() + ")";
+  return text;
+}
+
+/// A live mode of `size` and `format`, the requested rate preferred.
+const openni::VideoMode* findMode(const openni::SensorInfo& sensor, openni::PixelFormat format,
+                                  const RgbdDeviceRequest& request) {
+  const openni::VideoMode* best = nullptr;
+  const auto& modes = sensor.getSupportedVideoModes();
+  for (int i = 0; i < modes.getSize(); ++i) {
+    const openni::VideoMode& m = modes[i];
+    if (m.getPixelFormat() != format || m.getResolutionX() != request.width ||
+        m.getResolutionY() != request.height)
+      continue;
+    if (!best || std::abs(m.getFps() - request.fps) < std::abs(best->getFps() - request.fps))
+      best = &m;
+  }
+  return best;
+}
+
+class OpenNi2Device final : public RgbdDevice {
+ public:
+  explicit OpenNi2Device(const RgbdDeviceRequest& request)
+      : where_(describe(request)), context_(OpenNiContext::acquire()) {
+    const char* uri = request.uri.empty() ? openni::ANY_DEVICE : request.uri.c_str();
+    if (device_.open(uri) != openni::STATUS_OK) {
+      const std::string error = openni::OpenNI::getExtendedError();
+      if (request.is_file) throw InputError(where_, "cannot open the recording: " + error);
+      throw InputError(where_, "no OpenNI2 device could be opened (" + error +
+                                   "). Looked for: " + driversFound() + "; " + devicesEnumerated() +
+                                   ". Is the camera plugged in, listed by lsusb, and may this "
+                                   "user open it (udev rules)?");
+    }
+    info_.uri = device_.getDeviceInfo().getUri();
+    info_.name =
+        std::string(device_.getDeviceInfo().getVendor()) + " " + device_.getDeviceInfo().getName();
+    info_.is_file = device_.isFile();
+    createStream(colour_, openni::SENSOR_COLOR, "colour");
+    createStream(depth_, openni::SENSOR_DEPTH, "depth");
+    if (!info_.is_file) chooseModes(request);
+    if (request.register_depth_to_colour &&
+        device_.isImageRegistrationModeSupported(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR))
+      device_.setImageRegistrationMode(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR);
+    info_.depth_registered =
+        device_.getImageRegistrationMode() == openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR;
+    if (request.sync_depth_and_colour && !info_.is_file) device_.setDepthColorSyncEnabled(true);
+    info_.synced = device_.getDepthColorSyncEnabled();
+    if (info_.is_file) {
+      openni::PlaybackControl* playback = device_.getPlaybackControl();
+      playback->setRepeatEnabled(false);
+      // A recording that was not closed properly says -1: its end is found by waiting.
+      info_.frames = std::max(
+          0, std::min(playback->getNumberOfFrames(colour_), playback->getNumberOfFrames(depth_)));
+      // At the recorded pace, as the camera delivered it. (OpenNI2 2.2's manual speed, -1,
+      // made readFrame() block for ever here, with and without waiting for the stream first.)
+      playback->setSpeed(1.0f);
+    }
+
+    checkFormats();
+  }
+
+  ~OpenNi2Device() override {
+    colour_.stop();
+    depth_.stop();
+    colour_.destroy();
+    depth_.destroy();
+    device_.close();
+  }
+
+  [[nodiscard]] const RgbdDeviceInfo& info() const override { return info_; }
+
+  std::optional<RawRgbdFrame> read() override {
+    // Streams start at the first read, not at open: a recording plays from its start then,
+    // instead of running past while the pipeline loads its models.
+    if (!started_) {
+      started_ = true;
+      if (colour_.start() != openni::STATUS_OK || depth_.start() != openni::STATUS_OK)
+        throw InputError(
+            where_, std::string("cannot start the streams: ") + openni::OpenNI::getExtendedError());
+    }
+    if (info_.is_file && info_.frames > 0 && read_ >= info_.frames) return std::nullopt;
+    openni::VideoFrameRef depth, colour;
+    if (!readFrame(depth_, depth, "depth") || !readFrame(colour_, colour, "colour"))
+      return std::nullopt;
+    // Unsynced streams drift apart: catch up the one that is behind (at most a few frames).
+    const auto half_period_us = static_cast<int64_t>(0.5e6 / std::max(1.0, info_.fps));
+    for (int tries = 0; tries < 4; ++tries) {
+      const int64_t gap = int64_t(colour.getTimestamp()) - int64_t(depth.getTimestamp());
+      if (std::abs(gap) <= half_period_us) break;
+      const bool ok =
+          gap < 0 ? readFrame(colour_, colour, "colour") : readFrame(depth_, depth, "depth");
+      if (!ok) return std::nullopt;
+    }
+    ++read_;
+    RawRgbdFrame frame;
+    frame.colour_stamp_us = colour.getTimestamp();
+    frame.depth_stamp_us = depth.getTimestamp();
+    const cv::Mat rgb(colour.getHeight(), colour.getWidth(), CV_8UC3,
+                      const_cast<void*>(colour.getData()), size_t(colour.getStrideInBytes()));
+    cv::cvtColor(rgb, frame.bgr, cv::COLOR_RGB2BGR);  // copies out of OpenNI's buffer
+    frame.depth_raw = cv::Mat(depth.getHeight(), depth.getWidth(), CV_16U,
+                              const_cast<void*>(depth.getData()), size_t(depth.getStrideInBytes()))
+                          .clone();
+    return frame;
+  }
+
+ private:
+  static std::string describe(const RgbdDeviceRequest& request) {
+    return request.is_file ? request.uri : "openni://" + request.uri;
+  }
+
+  void createStream(openni::VideoStream& stream, openni::SensorType type, const char* what) {
+    if (!device_.hasSensor(type))
+      throw InputError(where_, std::string("the device has no ") + what + " sensor");
+    if (stream.create(device_, type) != openni::STATUS_OK)
+      throw InputError(where_, std::string("cannot open the ") + what +
+                                   " stream: " + openni::OpenNI::getExtendedError());
+  }
+
+  void chooseModes(const RgbdDeviceRequest& request) {
+    const openni::VideoMode* colour = findMode(*device_.getSensorInfo(openni::SENSOR_COLOR),
+                                               openni::PIXEL_FORMAT_RGB888, request);
+    const openni::VideoMode* depth = findMode(*device_.getSensorInfo(openni::SENSOR_DEPTH),
+                                              openni::PIXEL_FORMAT_DEPTH_1_MM, request);
+    if (!depth)
+      depth = findMode(*device_.getSensorInfo(openni::SENSOR_DEPTH),
+                       openni::PIXEL_FORMAT_DEPTH_100_UM, request);
+    if (!colour || !depth)
+      throw InputError(where_, "the device has no " + std::to_string(request.width) + "x" +
+                                   std::to_string(request.height) +
+                                   " RGB888 colour and millimetre depth modes");
+    colour_.setVideoMode(*colour);
+    depth_.setVideoMode(*depth);
+  }
+
+  void checkFormats() {
+    const openni::VideoMode colour = colour_.getVideoMode(), depth = depth_.getVideoMode();
+    if (colour.getPixelFormat() != openni::PIXEL_FORMAT_RGB888)
+      throw InputError(where_, "colour pixel format " + std::to_string(colour.getPixelFormat()) +
+                                   " is not RGB888");
+    if (depth.getPixelFormat() == openni::PIXEL_FORMAT_DEPTH_1_MM)
+      info_.depth_unit_m = 0.001;
+    else if (depth.getPixelFormat() == openni::PIXEL_FORMAT_DEPTH_100_UM)
+      info_.depth_unit_m = 0.0001;
+    else
+      throw InputError(where_, "depth pixel format " + std::to_string(depth.getPixelFormat()) +
+                                   " is not millimetres or 100 µm");
+    if (colour.getResolutionX() != depth.getResolutionX() ||
+        colour.getResolutionY() != depth.getResolutionY())
+      throw InputError(where_, "colour " + std::to_string(colour.getResolutionX()) + "x" +
+                                   std::to_string(colour.getResolutionY()) + " and depth " +
+                                   std::to_string(depth.getResolutionX()) + "x" +
+                                   std::to_string(depth.getResolutionY()) + " sizes differ");
+    info_.width = colour.getResolutionX();
+    info_.height = colour.getResolutionY();
+    info_.fps = colour.getFps();
+    info_.horizontal_fov_rad = colour_.getHorizontalFieldOfView();
+    info_.vertical_fov_rad = colour_.getVerticalFieldOfView();
+  }
+
+  /// False at the end of a recording; DeviceError when a live stream goes silent or fails.
+  bool readFrame(openni::VideoStream& stream, openni::VideoFrameRef& frame, const char* what) {
+    openni::VideoStream* streams[] = {&stream};
+    int ready = -1;
+    if (openni::OpenNI::waitForAnyStream(streams, 1, &ready, kWaitMs) != openni::STATUS_OK) {
+      if (info_.is_file) {
+        spdlog::warn("{}: the {} stream ended after {} of {} frames", where_, what, read_,
+                     info_.frames);
+        return false;
+      }
+      throw DeviceError(where_ + ": no " + what + " frame for " + std::to_string(kWaitMs) +
+                        " ms (" + openni::OpenNI::getExtendedError() + ")");
+    }
+    if (stream.readFrame(&frame) != openni::STATUS_OK || !frame.isValid())
+      throw DeviceError(where_ + ": reading a " + what +
+                        " frame failed: " + openni::OpenNI::getExtendedError());
+    return true;
+  }
+
+  std::string where_;
+  std::shared_ptr<OpenNiContext> context_;  // first member to come, last to go
+  openni::Device device_;
+  openni::VideoStream colour_, depth_;
+  RgbdDeviceInfo info_;
+  int read_ = 0;  // pairs delivered
+  bool started_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<RgbdDevice> openOpenNi2Device(const RgbdDeviceRequest& request) {
+  return std::make_unique<OpenNi2Device>(request);
+}
+
+bool haveOpenNi2() {
+  return true;
+}
+
+}  // namespace dynanav
+#endif  // DYNANAV_HAVE_OPENNI2
