@@ -53,7 +53,11 @@ std::optional<double> AudioStream::play(double not_before_s, MessageSound sound)
   std::lock_guard lock(mutex_);
   if (finished_ || error_) return std::nullopt;
   if (options_.threaded && starts_.size() >= options_.queue_messages) return std::nullopt;
-  const int64_t sample = std::max(toSample(not_before_s), claimed_);
+  // Rounded up: a message never starts before the time it was decided at (rounding to the
+  // nearest sample could place it up to half a sample, 10 us, before its frame's arrival).
+  const auto first_sample =
+      static_cast<int64_t>(std::ceil(std::max(0.0, not_before_s) * options_.mixer.rate_hz - 1e-9));
+  const int64_t sample = std::max(first_sample, claimed_);
   // Starts come in time order (each after the previous message's start); keep it so anyway.
   const auto at = std::upper_bound(starts_.begin(), starts_.end(), sample,
                                    [](int64_t s, const Start& start) { return s < start.sample; });
