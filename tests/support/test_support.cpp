@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
@@ -11,10 +13,30 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 namespace fs = std::filesystem;
 
+extern char** environ;
+
 namespace dynanav::test {
+
+int runAndSignal(const std::vector<std::string>& args, int signal_number,
+                 std::chrono::milliseconds delay) {
+  std::vector<std::string> argv_s = {DYNANAV_CLI};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, DYNANAV_CLI, nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  std::this_thread::sleep_for(delay);
+  kill(pid, signal_number);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status)
+                           : -1000 - (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
 
 fs::path sharedDir() {
   if (const char* env = std::getenv("DYNANAV_SHARED"); env && fs::is_directory(env)) return env;

@@ -1,8 +1,10 @@
 #pragma once
 // Shared test helpers: locating ../shared, scratch folders, running the CLI.
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace dynanav::test {
 
@@ -16,6 +18,10 @@ std::filesystem::path sharedModels();
 std::filesystem::path scratchDir(const std::string& tag);
 /// Runs `<build>/bin/dynanav ARGS`, capturing stdout+stderr into `output`; returns the exit code.
 int runCli(const std::string& args, std::string* output = nullptr);
+/// Starts `<build>/bin/dynanav ARGS`, sends `signal_number` after `delay` and waits: the exit
+/// code, -1 when it could not start, -1000 - N when signal N ended it.
+int runAndSignal(const std::vector<std::string>& args, int signal_number,
+                 std::chrono::milliseconds delay);
 /// ATE RMSE (m) of `est` against `gt` as the project's own `dynanav eval --json` computes it;
 /// a failed evaluation is reported as a test failure and returns 1e9.
 double ateRmse(const std::filesystem::path& gt, const std::filesystem::path& est);

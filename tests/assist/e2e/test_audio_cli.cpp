@@ -4,8 +4,6 @@
 // killed run; --audio live gives a clear exit-2 message without a sound device.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -13,12 +11,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <thread>
 
 #include "../wav_reader.hpp"
 #include "support/test_support.hpp"
-
-extern char** environ;
 
 namespace dynanav {
 namespace {
@@ -180,31 +175,14 @@ TEST_F(AudioCli, UnknownVoiceIsBadInputNamingTheKey) {
   EXPECT_NE(log.find("audio.voice"), std::string::npos) << log;
 }
 
-/// Starts the CLI, sends `signal_number` after `delay`, returns the exit status (-1: no exit).
-int runAndSignal(const std::vector<std::string>& args, int signal_number,
-                 std::chrono::milliseconds delay) {
-  std::vector<std::string> argv_s = {DYNANAV_CLI};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, DYNANAV_CLI, nullptr, nullptr, argv.data(), environ) != 0) return -2;
-  std::this_thread::sleep_for(delay);
-  kill(pid, signal_number);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 TEST_F(AudioCli, InterruptedAndKilledRunsLeaveAPlayableWav) {
   for (const int signal_number : {SIGINT, SIGKILL}) {
     const fs::path out = dir_ / ("signal_" + std::to_string(signal_number));
     // Paced at 30 Hz, 4 passes of the 60 frames take 8 s: the signal comes in the middle.
     const int code =
-        runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(), "--segmenter", "masks",
-                      "--realtime", "--passes", "4", "--audio", "--quiet"},
-                     signal_number, std::chrono::milliseconds(3500));
+        test::runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(), "--segmenter",
+                            "masks", "--realtime", "--passes", "4", "--audio", "--quiet"},
+                           signal_number, std::chrono::milliseconds(3500));
     if (signal_number == SIGINT) {
       EXPECT_EQ(code, 130);
     }

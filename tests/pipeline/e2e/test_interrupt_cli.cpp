@@ -3,42 +3,19 @@
 // trajectory holds whole lines only, keyframes.txt exists.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <thread>
 
 #include <unistd.h>
 
 #include "support/test_support.hpp"
 
-extern char** environ;
-
 namespace dynanav {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Starts the CLI with `args`, sends `signal_number` after `delay`, returns the exit code.
-int runAndSignal(const std::vector<std::string>& args, int signal_number,
-                 std::chrono::milliseconds delay) {
-  std::vector<std::string> argv_s = {DYNANAV_CLI};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, DYNANAV_CLI, nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  std::this_thread::sleep_for(delay);
-  kill(pid, signal_number);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status)
-                           : -1000 - (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
 
 void expectWellFormedOutputs(const fs::path& out, int max_frames) {
   const auto stats = nlohmann::json::parse(test::readFile(out / "stats.json"));  // throws if cut
@@ -80,18 +57,18 @@ fs::path InterruptCli::dir_;
 TEST_F(InterruptCli, SigintDuringARealtimeRunLeavesValidOutputs) {
   const fs::path out = dir_ / "sigint";
   // Paced at 30 Hz the 240 frames take 8 s: the signal comes in the middle.
-  const int code = runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(),
-                                 "--segmenter", "masks", "--realtime", "--quiet"},
-                                SIGINT, std::chrono::milliseconds(3500));
+  const int code = test::runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(),
+                                       "--segmenter", "masks", "--realtime", "--quiet"},
+                                      SIGINT, std::chrono::milliseconds(3500));
   EXPECT_EQ(code, 130);
   expectWellFormedOutputs(out, 240);
 }
 
 TEST_F(InterruptCli, SigtermDuringADeterministicRunLeavesValidOutputs) {
   const fs::path out = dir_ / "sigterm";
-  const int code = runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(),
-                                 "--segmenter", "masks", "--deterministic", "--quiet"},
-                                SIGTERM, std::chrono::milliseconds(2500));
+  const int code = test::runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(),
+                                       "--segmenter", "masks", "--deterministic", "--quiet"},
+                                      SIGTERM, std::chrono::milliseconds(2500));
   EXPECT_EQ(code, 143);
   expectWellFormedOutputs(out, 240);
 }
