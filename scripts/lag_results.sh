@@ -6,18 +6,9 @@
 # Prints one Markdown row per lag (ATE over every frame, evaluated with `dynanav eval`).
 # Usage: scripts/lag_results.sh [BUILD_DIR] [OUT_DIR] [MAX_LAG] [SEQ_DIR] [run flags...]
 set -euo pipefail
-cd "$(dirname "$0")/.."
-build=${1:-build/release}
-out=${2:-/tmp/dynanav_lag_results}
-max_lag=${3:-4}
-seq=${4:-../shared/data/rgbd_bonn_crowd}
-shift $(($# < 4 ? $# : 4))
-flags=("$@")
-[[ ${#flags[@]} -gt 0 ]] || flags=(--segmenter dnn)
-cli="$build/bin/dynanav"
-[[ -x "$cli" ]] || { echo "no $cli: build first (cmake --build --preset release)" >&2; exit 2; }
-[[ -d "$seq" ]] || { echo "no sequence $seq" >&2; exit 2; }
-mkdir -p "$out"
+default_out=/tmp/dynanav_lag_results default_count=4
+source "$(dirname "$0")/lib/sequence_bench_args.sh"
+max_lag=$count
 echo "sequence $seq, flags ${flags[*]} --deterministic"
 echo "| segmentation lag (frames) | ATE RMSE (m) | max error (m) | tracked |"
 echo "|---|---|---|---|"

@@ -6,18 +6,9 @@
 # the medians. Outputs stay in OUT_DIR. Say what else ran on the machine when you quote it.
 # Usage: scripts/realtime_results.sh [BUILD_DIR] [OUT_DIR] [RUNS] [SEQ_DIR] [run flags...]
 set -euo pipefail
-cd "$(dirname "$0")/.."
-build=${1:-build/release}
-out=${2:-/tmp/dynanav_realtime_results}
-runs=${3:-5}
-seq=${4:-../shared/data/rgbd_bonn_crowd}
-shift $(($# < 4 ? $# : 4))
-flags=("$@")
-[[ ${#flags[@]} -gt 0 ]] || flags=(--segmenter dnn)
-cli="$build/bin/dynanav"
-[[ -x "$cli" ]] || { echo "no $cli: build first (cmake --build --preset release)" >&2; exit 2; }
-[[ -d "$seq" ]] || { echo "no sequence $seq" >&2; exit 2; }
-mkdir -p "$out"
+default_out=/tmp/dynanav_realtime_results default_count=5
+source "$(dirname "$0")/lib/sequence_bench_args.sh"
+runs=$count
 
 row() {  # row NAME MODE_FLAGS...: one run, one Markdown row; the figures also go to $out/NAME.row
   local name=$1; shift
