@@ -24,9 +24,12 @@ std::vector<FeedbackEvent> FeedbackStage::process(const FeedbackInput& input) {
     if (h.moving || h.distance_m <= config_.near_person_m)
       spdlog::debug(
           "t {:.3f} object {} {:.2f} m at {:.0f} deg, closing {:.2f} m/s, closest {:.2f} m "
-          "(sigma {:.2f}) in {:.2f} s, ttc {:.2f} / warn {:.2f} s, user-related {}",
+          "(sigma {:.2f}, inside the corridor with p {:.2f}) in {:.2f} s, ttc {:.2f} / warn {:.2f} "
+          "s, "
+          "user-related {}",
           input.stamp_s, h.object_id, h.distance_m, h.bearing_deg, h.closing_mps, h.closest_m,
-          h.closest_sigma_m, h.t_closest_s, h.ttc_s, h.ttc_warn_s, h.user_related);
+          h.closest_sigma_m, h.corridor_probability, h.t_closest_s, h.ttc_s, h.ttc_warn_s,
+          h.user_related);
   return policy_.step(input.stamp_s, hazards_);
 }
 

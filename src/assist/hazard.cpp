@@ -1,17 +1,18 @@
 #include "assist/hazard.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 namespace dynanav {
 namespace {
 
-double largestSigma(const Eigen::Matrix2d& c) {
-  const Eigen::Matrix2d sym = 0.5 * (c + c.transpose());
-  const double lambda =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(sym).eigenvalues().maxCoeff();
-  return std::sqrt(std::max(0.0, lambda));
+/// Standard deviation of u·x for x with covariance c (u a unit vector).
+double sigmaAlong(const Eigen::Matrix2d& c, const Eigen::Vector2d& u) {
+  return std::sqrt(std::max(0.0, u.dot(0.5 * (c + c.transpose()) * u)));
+}
+
+double normalCdf(double z) {
+  return 0.5 * std::erfc(-z / std::sqrt(2.0));
 }
 
 double degrees(double rad) {
@@ -19,6 +20,11 @@ double degrees(double rad) {
 }
 
 }  // namespace
+
+double corridorProbability(double miss_m, double sigma_m, double corridor_m) {
+  if (sigma_m <= 1e-9) return std::abs(miss_m) <= corridor_m ? 1.0 : 0.0;
+  return normalCdf((corridor_m - miss_m) / sigma_m) - normalCdf((-corridor_m - miss_m) / sigma_m);
+}
 
 int clockOf(double bearing_deg) {
   // 30 degrees per hour; 0 and 12 are the same direction (straight ahead).
@@ -58,19 +64,29 @@ Hazard assessHazard(const TrackedObject& o, const GroundMotion& motion, const Bo
   if (t_star <= 0.0) return h;  // the distance only grows from now on
   h.t_closest_s = t_star;
   h.closest_m = (r + t_star * v_rel).norm();
-  // Estimation uncertainty only (see object_motion_fit.hpp): the predicted path's sigma_m adds
-  // the filter's process noise (possible manoeuvres, 3 m after 3 s at 1 m/s^2), which would make
-  // every walker within 3 m "user-related".
-  h.closest_sigma_m = largestSigma(motion.covarianceAt(t_star));
+  // The miss distance is the relative position along n, the normal of the relative velocity.
+  // Linearised, an error dp in the object's position and dv in its velocity move it by
+  // n·(dp + t* dv) exactly (the direction change of n contributes t* n·dv), so its standard
+  // deviation is that of the predicted position at t* along n (estimation uncertainty only, see
+  // object_motion_fit.hpp: the predicted path's sigma_m adds the filter's process noise, possible
+  // manoeuvres of 3 m after 3 s at 1 m/s^2, which would make every walker within 3 m
+  // "user-related"). Uncertainty along the relative path (e.g. the sideways position of a walker
+  // cut by the image edge, for one crossing in front) shifts the time of the closest approach,
+  // not the miss distance.
+  const double speed = std::sqrt(v2);
+  const Eigen::Vector2d along = v_rel / speed;
+  const Eigen::Vector2d normal(-along.y(), along.x());
+  h.closest_sigma_m = sigmaAlong(motion.covarianceAt(t_star), normal);
+  h.corridor_probability = corridorProbability(normal.dot(r), h.closest_sigma_m, config.corridor_m);
   if (h.closing_mps >= config.closing_min_mps) {
     h.ttc_s = t_star;
-    // The same closest approach reached at a closing speed faster by ttc_sigmas velocity
-    // sigmas: what a tracker that still underestimates the speed (it lags) may be missing.
-    const double speed = std::sqrt(v2);
-    h.ttc_warn_s = t_star * speed / (speed + config.ttc_sigmas * largestSigma(motion.cov_vv));
+    // The same closest approach reached at a closing speed faster by ttc_sigmas sigmas of the
+    // speed along the relative path: what a tracker that still underestimates the speed (it
+    // lags) may be missing.
+    h.ttc_warn_s = t_star * speed / (speed + config.ttc_sigmas * sigmaAlong(motion.cov_vv, along));
   }
   h.user_related = h.ttc_s >= 0.0 && h.ttc_warn_s <= config.user_horizon_s &&
-                   h.closest_m <= config.corridor_m + config.corridor_sigmas * h.closest_sigma_m;
+                   h.corridor_probability >= config.corridor_min_probability;
   return h;
 }
 

@@ -5,10 +5,12 @@
 // predicts; the velocity measured over the track's recent centres, object_motion_fit.hpp), its
 // time and distance, the closing speed, and whether it is "user-related": the
 // closest approach falls inside the wearer's corridor within the horizon. The tracker's
-// uncertainty enters twice (docs/feedback.md): the corridor widens by corridor_sigmas standard
-// deviations of the miss distance, and urgency uses the time to closest approach at a closing
-// speed ttc_sigmas velocity standard deviations faster than estimated. Static obstacles and
-// standing people get direction and distance only.
+// uncertainty enters twice (docs/feedback.md): user-related asks that the miss distance, a
+// Gaussian with the track's uncertainty, lies inside the corridor with at least
+// corridor_min_probability (a wide sigma spreads that probability thin instead of widening the
+// corridor for everyone), and urgency uses the time to closest approach at a closing speed
+// ttc_sigmas standard deviations faster than estimated. Static obstacles and standing people get
+// direction and distance only.
 #include <vector>
 
 #include "assist/body_frame.hpp"
@@ -30,14 +32,19 @@ struct Hazard {
   double speed_mps = 0.0;    ///< over ground
   double closing_mps = 0.0;  ///< rate at which the distance shrinks (< 0: moving apart)
   // Closest approach (moving objects; relative constant-velocity motion on the ground):
-  double t_closest_s = -1.0;       ///< time from now (< 0: none ahead, the distance only grows)
-  double closest_m = -1.0;         ///< miss distance then
-  double closest_sigma_m = 0.0;    ///< standard deviation of that position (track covariance)
-  double ttc_s = -1.0;             ///< time to closest approach when closing, else < 0
-  double ttc_warn_s = -1.0;        ///< the same at the pessimistic closing speed (urgency)
+  double t_closest_s = -1.0;     ///< time from now (< 0: none ahead, the distance only grows)
+  double closest_m = -1.0;       ///< miss distance then
+  double closest_sigma_m = 0.0;  ///< standard deviation of the miss distance (track covariance)
+  double corridor_probability = 0.0;  ///< probability that the miss distance is inside the corridor
+  double ttc_s = -1.0;                ///< time to closest approach when closing, else < 0
+  double ttc_warn_s = -1.0;           ///< the same at the pessimistic closing speed (urgency)
   bool user_related = false;       ///< closest approach inside the corridor within user_horizon_s
   bool in_corridor_ahead = false;  ///< static object: ahead, inside the corridor
 };
+
+/// Probability that a miss distance ~ N(miss_m, sigma_m^2) (signed, across the relative path)
+/// falls within +-corridor_m; sigma_m = 0 gives 1 inside, 0 outside.
+double corridorProbability(double miss_m, double sigma_m, double corridor_m);
 
 /// Clock position (1..12, 12 = ahead) of a bearing in degrees (right positive).
 int clockOf(double bearing_deg);

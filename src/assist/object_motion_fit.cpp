@@ -24,39 +24,46 @@ GroundMotion filterMotion(const TrackedObject& o) {
 }
 
 bool fitLine(const std::vector<double>& t_s, const std::vector<Eigen::Vector2d>& p, double t_now_s,
-             double min_span_s, double noise_m, GroundMotion& out) {
+             double min_span_s, double noise_m, GroundMotion& out,
+             const std::vector<Eigen::Matrix2d>& cov_p) {
   const size_t n = t_s.size();
   if (n < 3 || t_s.back() - t_s.front() < min_span_s) return false;
-  double tau_mean = 0.0;
-  Eigen::Vector2d p_mean = Eigen::Vector2d::Zero();
+  // Weighted least squares for x = [a; b], p_i = a + b tau_i + e_i, e_i ~ N(0, C_i + noise^2 I):
+  // a centre whose sideways position a partial view could not measure (1 m sigma from the
+  // tracker) barely pulls the line that way, and if all of them are such, the fit says so.
+  using Mat4 = Eigen::Matrix4d;
+  Mat4 normal = Mat4::Zero();
+  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+  std::vector<Eigen::Matrix2d> weight(n);
+  const Eigen::Matrix2d floor = noise_m * noise_m * Eigen::Matrix2d::Identity();
   for (size_t i = 0; i < n; ++i) {
-    tau_mean += t_s[i] - t_now_s;
-    p_mean += p[i];
+    Eigen::Matrix2d c = Eigen::Matrix2d::Zero();
+    if (i < cov_p.size()) c = 0.5 * (cov_p[i] + cov_p[i].transpose());
+    weight[i] = (c + floor).inverse();
+    Eigen::Matrix<double, 2, 4> h;
+    h << Eigen::Matrix2d::Identity(), (t_s[i] - t_now_s) * Eigen::Matrix2d::Identity();
+    normal += h.transpose() * weight[i] * h;
+    rhs += h.transpose() * weight[i] * p[i];
   }
-  tau_mean /= double(n);
-  p_mean /= double(n);
-  double s_tt = 0.0;
-  Eigen::Vector2d s_tp = Eigen::Vector2d::Zero();
+  const Mat4 normal_inv = normal.inverse();
+  const Eigen::Vector4d x = normal_inv * rhs;
+  // Residuals larger than the assumed noise (the walker sways, the mask jumps) scale the
+  // covariance per axis, as a per-axis variance estimate with n - 2 degrees of freedom would;
+  // smaller ones do not shrink it (a perfect line is not certain).
+  Eigen::Vector2d chi2 = Eigen::Vector2d::Zero();
   for (size_t i = 0; i < n; ++i) {
-    const double dt = t_s[i] - t_now_s - tau_mean;
-    s_tt += dt * dt;
-    s_tp += dt * (p[i] - p_mean);
+    const Eigen::Vector2d e = p[i] - x.head<2>() - (t_s[i] - t_now_s) * x.tail<2>();
+    chi2 += (weight[i].diagonal().array() * e.array().square()).matrix();
   }
-  const Eigen::Vector2d b = s_tp / s_tt;
-  const Eigen::Vector2d a = p_mean - b * tau_mean;
-  // Residual variance per axis (n - 2 degrees of freedom), floored by the measurement noise.
-  Eigen::Vector2d rss = Eigen::Vector2d::Zero();
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d r = p[i] - (a + b * (t_s[i] - t_now_s));
-    rss += r.cwiseProduct(r);
-  }
-  const double floor = noise_m * noise_m;
-  const Eigen::Vector2d s2 = (rss / double(n - 2)).cwiseMax(floor);
-  out.p = a;
-  out.v = b;
-  out.cov_vv = (s2 / s_tt).asDiagonal();
-  out.cov_pp = (s2 * (1.0 / double(n) + tau_mean * tau_mean / s_tt)).asDiagonal();
-  out.cov_pv = (-s2 * tau_mean / s_tt).asDiagonal();
+  const Eigen::Vector2d scale = (chi2 / double(n - 2)).cwiseMax(1.0).cwiseSqrt();
+  Eigen::Vector4d d;
+  d << scale, scale;
+  const Mat4 cov = d.asDiagonal() * normal_inv * d.asDiagonal();
+  out.p = x.head<2>();
+  out.v = x.tail<2>();
+  out.cov_pp = cov.topLeftCorner<2, 2>();
+  out.cov_pv = cov.topRightCorner<2, 2>();
+  out.cov_vv = cov.bottomRightCorner<2, 2>();
   out.fitted = true;
   return true;
 }
@@ -69,15 +76,17 @@ std::vector<GroundMotion> MotionHistory::update(double stamp_s,
   for (const TrackedObject& o : objects) {
     std::deque<Sample>& history = kept[o.id];
     if (auto it = samples_.find(o.id); it != samples_.end()) history = std::move(it->second);
-    history.push_back({stamp_s, {o.p_world.x(), o.p_world.z()}});
-    while (stamp_s - history.front().stamp_s > config_.velocity_window_s) history.pop_front();
     GroundMotion m = filterMotion(o);
+    history.push_back({stamp_s, m.p, m.cov_pp});
+    while (stamp_s - history.front().stamp_s > config_.velocity_window_s) history.pop_front();
     if (o.dynamic) {
       std::vector<double> t;
       std::vector<Eigen::Vector2d> p;
-      for (const Sample& s : history) t.push_back(s.stamp_s), p.push_back(s.p);
+      std::vector<Eigen::Matrix2d> cov;
+      for (const Sample& s : history)
+        t.push_back(s.stamp_s), p.push_back(s.p), cov.push_back(s.cov_p);
       GroundMotion fit;
-      if (fitLine(t, p, stamp_s, config_.velocity_min_span_s, config_.position_noise_m, fit)) {
+      if (fitLine(t, p, stamp_s, config_.velocity_min_span_s, config_.position_noise_m, fit, cov)) {
         // The filter's current centre is the newest measurement's best estimate; the line
         // gives the motion (their cross-covariance is not known: taken as none).
         fit.p = m.p;

@@ -34,10 +34,14 @@ struct GroundMotion {
 /// The tracker's own estimate, on the ground plane (a static object: zero velocity).
 GroundMotion filterMotion(const TrackedObject& object);
 
-/// Line fit p = a + b (t - t_now) through (t, p) samples; false when under 3 samples or a span
-/// under min_span_s. Residual variance floored at noise_m^2 (a perfect line is not certain).
+/// Line fit p = a + b (t - t_now) through (t, p) samples, each weighted by the inverse of its
+/// covariance cov_p[i] (none given: zero) plus noise_m^2 I; false when under 3 samples or a span
+/// under min_span_s. The covariance of the line is scaled up per axis when the residuals exceed
+/// what the weights expect, never down (a perfect line is not certain). With no cov_p it is the
+/// ordinary per-axis least-squares line with its residual variance floored at noise_m^2.
 bool fitLine(const std::vector<double>& t_s, const std::vector<Eigen::Vector2d>& p, double t_now_s,
-             double min_span_s, double noise_m, GroundMotion& out);
+             double min_span_s, double noise_m, GroundMotion& out,
+             const std::vector<Eigen::Matrix2d>& cov_p = {});
 
 class MotionHistory {
  public:
@@ -50,6 +54,7 @@ class MotionHistory {
   struct Sample {
     double stamp_s;
     Eigen::Vector2d p;
+    Eigen::Matrix2d cov_p;  ///< the tracker's position covariance then
   };
   AssistConfig config_;
   std::map<uint64_t, std::deque<Sample>> samples_;  // by track id

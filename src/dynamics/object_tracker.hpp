@@ -49,6 +49,7 @@ class ObjectTracker {
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
     uint16_t instance = 0;            // label in the last frame (0: carried)
     bool trunk = false;               // the points are a person's trunk
+    double depth_share = 1.0;         // share of the sampled mask pixels with usable depth
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
     int missed = 0;

@@ -84,7 +84,7 @@ TEST(Hazard, WalkingAwayHasNoTimeToCollision) {
   EXPECT_FALSE(h.user_related);
 }
 
-TEST(Hazard, UncertaintyWidensTheCorridorAndAdvancesTheWarning) {
+TEST(Hazard, UncertaintySpreadsTheMissDistanceAndAdvancesTheWarning) {
   AssistConfig config;
   TrackedObject o = person({1.0, 0.0, 6.0}, {0, 0, -1});  // passes 1.0 m aside, 3 s from now
   EXPECT_FALSE(assessHazard(o, walkingNorth(1.0), config).user_related);
@@ -92,11 +92,61 @@ TEST(Hazard, UncertaintyWidensTheCorridorAndAdvancesTheWarning) {
   for (int k = 3; k < 6; ++k) o.covariance(k, k) = 0.04;
   const Hazard uncertain = assessHazard(o, walkingNorth(1.0), config);
   EXPECT_NEAR(uncertain.closest_sigma_m, 0.6, 1e-9);
-  EXPECT_TRUE(uncertain.user_related);
+  EXPECT_FALSE(uncertain.user_related);  // more likely outside than inside (below)
   EXPECT_NEAR(uncertain.ttc_s, 3.0, 1e-9);
   EXPECT_NEAR(uncertain.ttc_warn_s, 3.0 * 2.0 / 2.2, 1e-9);  // closing could be 0.2 m/s faster
-  config.corridor_sigmas = 0.0;
-  EXPECT_FALSE(assessHazard(o, walkingNorth(1.0), config).user_related);
+  // Miss distance 1.0 m +- 0.6 m: inside +-0.8 m with probability Phi(-1/3) - Phi(-3).
+  EXPECT_NEAR(uncertain.corridor_probability, 0.36944 - 0.00135, 1e-4);
+  config.corridor_min_probability = 0.3;  // a user who wants warnings on weaker evidence
+  EXPECT_TRUE(assessHazard(o, walkingNorth(1.0), config).user_related);
+}
+
+TEST(Hazard, CorridorProbabilityOfAGaussianMissDistance) {
+  EXPECT_EQ(corridorProbability(0.5, 0.0, 0.8), 1.0);  // certain: the plain corridor
+  EXPECT_EQ(corridorProbability(-0.9, 0.0, 0.8), 0.0);
+  EXPECT_NEAR(corridorProbability(0.0, 0.8, 0.8), 0.682689, 1e-6);  // +-1 sigma
+  EXPECT_NEAR(corridorProbability(1.3, 0.5, 0.8), corridorProbability(-1.3, 0.5, 0.8), 1e-12);
+  EXPECT_NEAR(corridorProbability(1.8, 1e-3, 0.8), 0.0, 1e-12);
+  // The default threshold (0.5) sits at the corridor's edge whatever a small sigma.
+  EXPECT_NEAR(corridorProbability(0.8, 0.1, 0.8), 0.5, 1e-6);
+  EXPECT_NEAR(corridorProbability(0.8, 0.02, 0.8), 0.5, 1e-6);
+}
+
+TEST(Hazard, UncertaintyAlongTheRelativePathDoesNotWidenTheCorridor) {
+  // A walker crossing 1.7 m in front of a standing wearer, right to left at 1.4 m/s, whose
+  // sideways position is unknown (cut by the image edge: 1 m sigma along world x) while its
+  // depth is known to 5 cm. Along the path the uncertainty only moves the time of the closest
+  // approach; the miss distance stays 1.7 +- 0.05 m: outside the 0.8 m corridor.
+  TrackedObject crossing = person({3.0, 0.0, 1.7}, {-1.4, 0, 0});
+  crossing.covariance(0, 0) = 1.0;
+  crossing.covariance(2, 2) = 0.05 * 0.05;
+  const Hazard h = assessHazard(crossing, walkingNorth(0.0), AssistConfig{});
+  EXPECT_NEAR(h.closest_m, 1.7, 1e-9);
+  EXPECT_NEAR(h.closest_sigma_m, 0.05, 1e-9);
+  EXPECT_NEAR(h.corridor_probability, 0.0, 1e-9);
+  EXPECT_GT(h.ttc_s, 0.0);
+  EXPECT_FALSE(h.user_related);
+  // The same uncertainty across the path (depth unknown to 1 m) makes it possible, not likely:
+  // P(|N(1.7, 1)| <= 0.8) = Phi(-0.9) - Phi(-2.5).
+  crossing.covariance(0, 0) = 0.05 * 0.05;
+  crossing.covariance(2, 2) = 1.0;
+  const Hazard across = assessHazard(crossing, walkingNorth(0.0), AssistConfig{});
+  EXPECT_NEAR(across.closest_sigma_m, 1.0, 1e-9);
+  EXPECT_NEAR(across.corridor_probability, 0.18406 - 0.00621, 1e-4);
+  EXPECT_FALSE(across.user_related);
+}
+
+TEST(Hazard, AnUnknownPathIsNotACollisionCourse) {
+  // Head-on but with the miss distance unknown to +-1.5 m: passing inside +-0.8 m has
+  // probability 0.41, so the walker is not user-related yet (advisories by time to collision
+  // still apply); known to +-0.5 m it is (0.89).
+  TrackedObject o = person({0.0, 0.0, 6.0}, {0, 0, -1});
+  o.covariance(0, 0) = 1.5 * 1.5;
+  const Hazard unknown = assessHazard(o, walkingNorth(1.0), AssistConfig{});
+  EXPECT_NEAR(unknown.corridor_probability, 0.406, 1e-3);
+  EXPECT_FALSE(unknown.user_related);
+  o.covariance(0, 0) = 0.25;
+  EXPECT_TRUE(assessHazard(o, walkingNorth(1.0), AssistConfig{}).user_related);
 }
 
 TEST(Hazard, StaticObstacleHasDirectionAndDistanceOnly) {
@@ -192,6 +242,31 @@ TEST(MotionFit, ExactLineAndRobustToOneJump) {
   EXPECT_GT(std::sqrt(fit.cov_vv(1, 1)), std::sqrt(fit.cov_vv(0, 0)));  // residuals show it
   // Too short a history: no fit.
   EXPECT_FALSE(fitLine({0.0, 0.033, 0.066}, {p[0], p[1], p[2]}, 0.066, 0.2, 0.05, fit));
+}
+
+TEST(MotionFit, CentresAPartialViewCouldNotPlaceBarelyPullTheLine) {
+  // A walker at 1.4 m/s along x. The first 9 centres come from a view cut by the image edge:
+  // their x is unknown (1 m sigma from the tracker) and biased 0.3 m inwards; the last 9 are
+  // measured to 2 cm.
+  std::vector<double> t;
+  std::vector<Eigen::Vector2d> p;
+  std::vector<Eigen::Matrix2d> cov;
+  for (int i = 0; i < 18; ++i) {
+    t.push_back(i / 30.0);
+    const bool cut = i < 9;
+    p.push_back(Eigen::Vector2d(1.4 * t.back() + (cut ? 0.3 : 0.0), 4.0));
+    cov.push_back(Eigen::Vector2d(cut ? 1.0 : 4e-4, 4e-4).asDiagonal());
+  }
+  GroundMotion weighted, plain;
+  ASSERT_TRUE(fitLine(t, p, t.back(), 0.2, 0.02, weighted, cov));
+  ASSERT_TRUE(fitLine(t, p, t.back(), 0.2, 0.02, plain));
+  EXPECT_NEAR(weighted.v.x(), 1.4, 0.1);
+  EXPECT_LT(plain.v.x(), 0.8);  // the unweighted line follows the bias: 0.65 m/s
+  // Only cut views: the line's sideways velocity is as unknown as the centres were.
+  for (auto& c : cov) c = Eigen::Vector2d(1.0, 4e-4).asDiagonal();
+  ASSERT_TRUE(fitLine(t, p, t.back(), 0.2, 0.02, weighted, cov));
+  EXPECT_GT(std::sqrt(weighted.cov_vv(0, 0)), 1.0);
+  EXPECT_LT(std::sqrt(weighted.cov_vv(1, 1)), 0.2);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ struct AssistConfig {
   // Hazards.
   double corridor_m = 0.8;
   double user_horizon_s = 4.0;
-  double corridor_sigmas = 1.0;
+  double corridor_min_probability = 0.5;
   double ttc_sigmas = 1.0;
   double closing_min_mps = 0.2;
   // Message policy.
@@ -71,10 +71,12 @@ struct AssistConfig {
       Range{0, 10});
     v("user_horizon_s", user_horizon_s,
       "user-related only when the closest approach comes within this time (s)", Range{0, 30});
-    v("corridor_sigmas", corridor_sigmas,
-      "the corridor test widens by this many standard deviations of the estimated miss distance "
-      "(track covariance at the time of closest approach)",
-      Range{0, 10});
+    v("corridor_min_probability", corridor_min_probability,
+      "user-related when the miss distance, a Gaussian with the track's uncertainty at the time "
+      "of closest approach, lies inside the corridor with at least this probability (0.5: more "
+      "likely inside than not; a sigma small against the corridor gives the plain corridor, a "
+      "large one, a path not known yet, raises no urgency)",
+      Range{0, 1, Range::kOpenLow});
     v("ttc_sigmas", ttc_sigmas,
       "urgency uses the time to closest approach at a closing speed this many velocity standard "
       "deviations faster than estimated (warn by the earliest plausible time)",

@@ -14,6 +14,7 @@ struct ObjectTrackingConfig {
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
   double centre_behind_surface_m = 0.15;
+  double min_depth_share = 0.5;
   int min_motion_points = 12;
   int ransac_iterations = 100;
   double ransac_reprojection_px = 2.0;
@@ -49,6 +50,11 @@ struct ObjectTrackingConfig {
       "(other "
       "objects: half their visible width)",
       Range{0, 2});
+    v("min_depth_share", min_depth_share,
+      "when fewer of the points sampled in an instance's mask than this share have usable depth "
+      "(the rest beyond the sensor's range or without a return), the centre of those that do is "
+      "not the object's: its position counts as unknown to the filter",
+      Range{0, 1});
     v("min_motion_points", min_motion_points,
       "fewest 3D-2D correspondences for a rigid-motion estimate", Range{6, 100000});
     v("ransac_iterations", ransac_iterations, "EPnP-RANSAC iterations per object and frame",
