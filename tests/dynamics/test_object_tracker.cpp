@@ -154,6 +154,35 @@ TEST(ObjectTracker, ObjectEnteringAtTheImageSideKeepsItsSpeed) {
   EXPECT_NEAR(out[0].p_world.x(), centre_x_m, 0.05);
 }
 
+TEST(ObjectTracker, APartialViewDoesNotPlaceTheCentre) {
+  // Wholly in view with depth everywhere: the centre is measured to centimetres.
+  {
+    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    const auto out = step(tracker, frame({200.f}, {true}, false), 0);
+    ASSERT_EQ(out.size(), 1u);
+    for (int k = 0; k < 3; ++k) EXPECT_LT(std::sqrt(out[0].covariance(k, k)), 0.1) << k;
+  }
+  // Depth on the left fifth of the mask only (the rest beyond the sensor's range): the centre of
+  // what has depth is not the object's, in any component.
+  {
+    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    SynthFrame f = frame({200.f}, {true}, false);
+    f.depth_m(cv::Rect(212, 150, 48, 120)).setTo(0.f);
+    const auto out = step(tracker, f, 0);
+    ASSERT_EQ(out.size(), 1u);
+    for (int k = 0; k < 3; ++k) EXPECT_GT(std::sqrt(out[0].covariance(k, k)), 0.5) << k;
+  }
+  // Cut by the image's left edge: sideways position and depth unknown, height measured.
+  {
+    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    const auto out = step(tracker, frame({-30.f}, {true}, false), 0);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_GT(std::sqrt(out[0].covariance(0, 0)), 0.5);
+    EXPECT_LT(std::sqrt(out[0].covariance(1, 1)), 0.1);
+    EXPECT_GT(std::sqrt(out[0].covariance(2, 2)), 0.5);
+  }
+}
+
 TEST(ObjectPoints, TrunkBandOfAPersonWhoseFeetAreOutOfView) {
   // A person 400 px tall at its depth whose box (top at row 200) is cut by the image's bottom:
   // the trunk is 20-50 % of the whole height below the head (rows 280-400), not of the box.
