@@ -1,23 +1,27 @@
 // The OpenNI2 adapter behind RgbdDevice (compiled only when CMake found libopenni2; otherwise
 // openni2_missing.cpp says so). Live: colour RGB888 and depth in 1 mm (or 100 µm) units, depth
-// registered to colour and frame-synced when the device can. An .oni recording plays at its
-// recorded pace, as the camera delivered it; the end of the recording ends the stream.
+// registered to colour and frame-synced when the device can. An .oni recording plays every
+// frame, in order (manual playback speed); the end of the recording ends the stream.
 #ifdef DYNANAV_HAVE_OPENNI2
 #include <OpenNI.h>
 #include <dlfcn.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <mutex>
 #include <opencv2/imgproc.hpp>
+#include <thread>
 #include <vector>
 
 #include "core/error.hpp"
 #include "io/rgbd_device.hpp"
+#include "io/stream_pairing.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,6 +29,8 @@ namespace dynanav {
 namespace {
 
 constexpr int kWaitMs = 2000;  // a live camera delivers every 33 ms; 2 s of silence is a fault
+constexpr float kManualSpeed = -1.0f;  // OpenNI2 playback speed: a frame per request
+constexpr size_t kMaxQueued = 8;       // frames of one stream waiting for the other's
 
 /// OpenNI2 keeps one context per process: initialised with the first device, shut down with
 /// the last (its drivers allocate at initialise and free only at shutdown; ASan's leak check
@@ -131,22 +137,28 @@ class OpenNi2Device final : public RgbdDevice {
     if (request.sync_depth_and_colour && !info_.is_file) device_.setDepthColorSyncEnabled(true);
     info_.synced = device_.getDepthColorSyncEnabled();
     if (info_.is_file) {
+      requireCropping(colour_, "colour");
+      requireCropping(depth_, "depth");
       openni::PlaybackControl* playback = device_.getPlaybackControl();
       playback->setRepeatEnabled(false);
       // A recording that was not closed properly says -1: its end is found by waiting.
       info_.frames = std::max(
           0, std::min(playback->getNumberOfFrames(colour_), playback->getNumberOfFrames(depth_)));
-      // At the recorded pace, as the camera delivered it. (OpenNI2 2.2's manual speed, -1,
-      // made readFrame() block for ever here, with and without waiting for the stream first.)
-      playback->setSpeed(1.0f);
+      // Manual speed: the player hands over one recorded frame each time a wait asks for one,
+      // so every frame arrives, in the file's order, however slow the pipeline is. Pacing at
+      // the recorded rate is the real-time runner's job, as for a folder.
+      playback->setSpeed(kManualSpeed);
     }
 
     checkFormats();
   }
 
   ~OpenNi2Device() override {
-    colour_.stop();
-    depth_.stop();
+    stopStreams();
+    // OpenNI2 2.2's file player thread walks the device's stream list without its lock, every
+    // 10 ms once no stream runs: destroying a stream while it walks crashed about one run in
+    // 100 here. Stopped streams and a pause put it in its sleep first.
+    if (info_.is_file) std::this_thread::sleep_for(std::chrono::milliseconds(30));
     colour_.destroy();
     depth_.destroy();
     device_.close();
@@ -163,33 +175,43 @@ class OpenNi2Device final : public RgbdDevice {
         throw InputError(
             where_, std::string("cannot start the streams: ") + openni::OpenNI::getExtendedError());
     }
-    if (info_.is_file && info_.frames > 0 && read_ >= info_.frames) return std::nullopt;
-    openni::VideoFrameRef depth, colour;
-    if (!readFrame(depth_, depth, "depth") || !readFrame(colour_, colour, "colour"))
+    if (info_.is_file && info_.frames > 0 && read_ >= info_.frames) {
+      stopStreams();  // at its end the player would otherwise spin a core until closed
       return std::nullopt;
-    // Unsynced streams drift apart: catch up the one that is behind (at most a few frames).
-    const auto half_period_us = static_cast<int64_t>(0.5e6 / std::max(1.0, info_.fps));
-    for (int tries = 0; tries < 4; ++tries) {
-      const int64_t gap = int64_t(colour.getTimestamp()) - int64_t(depth.getTimestamp());
-      if (std::abs(gap) <= half_period_us) break;
-      const bool ok =
-          gap < 0 ? readFrame(colour_, colour, "colour") : readFrame(depth_, depth, "depth");
-      if (!ok) return std::nullopt;
     }
+    while (true) {
+      if (!colour_queue_.empty() && !depth_queue_.empty()) {
+        const uint64_t colour_us = colour_queue_.front().getTimestamp();
+        const uint64_t depth_us = depth_queue_.front().getTimestamp();
+        const PairStep step = pairStep(colour_us, depth_us, info_.fps);
+        if (step == PairStep::kPair) break;
+        const bool colour_goes = step == PairStep::kDropColour;
+        spdlog::warn("{}: {} frame at {} us has no {} frame within {} us; dropped", where_,
+                     colour_goes ? "colour" : "depth", colour_goes ? colour_us : depth_us,
+                     colour_goes ? "depth" : "colour", pairingToleranceUs(info_.fps));
+        (colour_goes ? colour_queue_ : depth_queue_).pop_front();
+        continue;
+      }
+      if (!readNext()) {
+        stopStreams();
+        return std::nullopt;
+      }
+    }
+    RawRgbdFrame frame = toRaw(colour_queue_.front(), depth_queue_.front());
+    colour_queue_.pop_front();
+    depth_queue_.pop_front();
     ++read_;
-    RawRgbdFrame frame;
-    frame.colour_stamp_us = colour.getTimestamp();
-    frame.depth_stamp_us = depth.getTimestamp();
-    const cv::Mat rgb(colour.getHeight(), colour.getWidth(), CV_8UC3,
-                      const_cast<void*>(colour.getData()), size_t(colour.getStrideInBytes()));
-    cv::cvtColor(rgb, frame.bgr, cv::COLOR_RGB2BGR);  // copies out of OpenNI's buffer
-    frame.depth_raw = cv::Mat(depth.getHeight(), depth.getWidth(), CV_16U,
-                              const_cast<void*>(depth.getData()), size_t(depth.getStrideInBytes()))
-                          .clone();
     return frame;
   }
 
  private:
+  void stopStreams() {
+    if (stopped_) return;
+    stopped_ = true;
+    colour_.stop();
+    depth_.stop();
+  }
+
   static std::string describe(const RgbdDeviceRequest& request) {
     return request.is_file ? request.uri : "openni://" + request.uri;
   }
@@ -243,23 +265,63 @@ class OpenNi2Device final : public RgbdDevice {
     info_.vertical_fov_rad = colour_.getVerticalFieldOfView();
   }
 
-  /// False at the end of a recording; DeviceError when a live stream goes silent or fails.
-  bool readFrame(openni::VideoStream& stream, openni::VideoFrameRef& frame, const char* what) {
-    openni::VideoStream* streams[] = {&stream};
+  /// A recording without a cropping property cannot be played by OpenNI2 2.2: its file
+  /// player (PlayerStream::OnNewDataCallback) drops every frame of a stream whose recorded
+  /// properties lack one, so the reads would only time out. Recordings of drivers that do not
+  /// report cropping have none (OpenNI2's own DummyDevice); PrimeSense devices report it.
+  void requireCropping(openni::VideoStream& stream, const char* what) {
+    OniCropping cropping{};
+    if (stream.getProperty(ONI_STREAM_PROPERTY_CROPPING, &cropping) != openni::STATUS_OK)
+      throw InputError(where_, std::string("the recording's ") + what +
+                                   " stream has no cropping property (xnCropping): OpenNI2 " +
+                                   std::to_string(ONI_VERSION_MAJOR) + "." +
+                                   std::to_string(ONI_VERSION_MINOR) +
+                                   "'s player delivers no frame of such a stream (recorded "
+                                   "from a driver that does not report cropping)");
+  }
+
+  /// Waits for a frame of either stream and queues it: waiting on both at once takes each
+  /// frame as the driver (or, in manual playback, the file) hands it over, so neither
+  /// stream's single-frame holder is overwritten while the other is awaited. False at the end
+  /// of a recording; DeviceError when a live stream goes silent or fails.
+  bool readNext() {
+    openni::VideoStream* streams[] = {&colour_, &depth_};
     int ready = -1;
-    if (openni::OpenNI::waitForAnyStream(streams, 1, &ready, kWaitMs) != openni::STATUS_OK) {
+    if (openni::OpenNI::waitForAnyStream(streams, 2, &ready, kWaitMs) != openni::STATUS_OK) {
       if (info_.is_file) {
-        spdlog::warn("{}: the {} stream ended after {} of {} frames", where_, what, read_,
-                     info_.frames);
+        spdlog::warn("{}: the recording ended after {} of {} frames", where_, read_, info_.frames);
         return false;
       }
-      throw DeviceError(where_ + ": no " + what + " frame for " + std::to_string(kWaitMs) +
-                        " ms (" + openni::OpenNI::getExtendedError() + ")");
+      throw DeviceError(where_ + ": no frame for " + std::to_string(kWaitMs) + " ms (" +
+                        openni::OpenNI::getExtendedError() + ")");
     }
-    if (stream.readFrame(&frame) != openni::STATUS_OK || !frame.isValid())
+    const char* what = ready == 0 ? "colour" : "depth";
+    openni::VideoFrameRef frame;
+    if (streams[ready]->readFrame(&frame) != openni::STATUS_OK || !frame.isValid())
       throw DeviceError(where_ + ": reading a " + what +
                         " frame failed: " + openni::OpenNI::getExtendedError());
+    auto& queue = ready == 0 ? colour_queue_ : depth_queue_;
+    queue.push_back(frame);
+    if (queue.size() > kMaxQueued) {
+      spdlog::warn("{}: {} frames arrive without {} frames; the oldest is dropped", where_, what,
+                   ready == 0 ? "depth" : "colour");
+      queue.pop_front();
+    }
     return true;
+  }
+
+  static RawRgbdFrame toRaw(const openni::VideoFrameRef& colour,
+                            const openni::VideoFrameRef& depth) {
+    RawRgbdFrame frame;
+    frame.colour_stamp_us = colour.getTimestamp();
+    frame.depth_stamp_us = depth.getTimestamp();
+    const cv::Mat rgb(colour.getHeight(), colour.getWidth(), CV_8UC3,
+                      const_cast<void*>(colour.getData()), size_t(colour.getStrideInBytes()));
+    cv::cvtColor(rgb, frame.bgr, cv::COLOR_RGB2BGR);  // copies out of OpenNI's buffer
+    frame.depth_raw = cv::Mat(depth.getHeight(), depth.getWidth(), CV_16U,
+                              const_cast<void*>(depth.getData()), size_t(depth.getStrideInBytes()))
+                          .clone();
+    return frame;
   }
 
   std::string where_;
@@ -267,8 +329,10 @@ class OpenNi2Device final : public RgbdDevice {
   openni::Device device_;
   openni::VideoStream colour_, depth_;
   RgbdDeviceInfo info_;
-  int read_ = 0;  // pairs delivered
+  std::deque<openni::VideoFrameRef> colour_queue_, depth_queue_;  // read, not yet paired
+  int read_ = 0;                                                  // pairs delivered
   bool started_ = false;
+  bool stopped_ = false;
 };
 
 }  // namespace
