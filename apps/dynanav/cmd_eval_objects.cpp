@@ -69,6 +69,8 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
                          {"velocity_rmse_mps", s.velocity_rmse_mps},
                          {"moving_frames", s.moving_frames},
                          {"speed_rmse_moving_mps", s.speed_rmse_moving_mps},
+                         {"speed_known_frames", s.speed_known_frames},
+                         {"speed_rmse_known_mps", s.speed_rmse_known_mps},
                          {"stopped_frames", s.stopped_frames},
                          {"speed_mean_stopped_mps", s.speed_mean_stopped_mps},
                          {"speed_max_stopped_mps", s.speed_max_stopped_mps}});
@@ -80,6 +82,8 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
                                 {"position_rmse_m", m.position_rmse_m},
                                 {"speed_rmse_mps", m.speed_rmse_mps},
                                 {"velocity_rmse_mps", m.velocity_rmse_mps},
+                                {"speed_known_frames", m.speed_known_frames},
+                                {"speed_rmse_known_mps", m.speed_rmse_known_mps},
                                 {"false_tracks", m.false_tracks},
                                 {"false_track_ids", m.false_track_ids},
                                 {"objects", objects}}
@@ -93,15 +97,19 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
       m.frames, m.matched, m.scored, m.recall(), m.id_switches, m.false_tracks, m.false_track_ids);
   std::cout << fmt::format("rmse     position {:.4f} m  speed {:.4f} m/s  velocity {:.4f} m/s\n",
                            m.position_rmse_m, m.speed_rmse_mps, m.velocity_rmse_mps);
+  std::cout << fmt::format(
+      "known    speed {:.4f} m/s over the {} of {} matched frames whose velocity "
+      "is known (velocity_known)\n",
+      m.speed_rmse_known_mps, m.speed_known_frames, m.matched);
   for (const ObjectScore& s : m.objects)
     std::cout << fmt::format(
         "object {} {}: {}/{} frames (recall {:.3f}), {} id switches ({:.2f} per 100 "
-        "frames), position {:.4f} m, speed {:.4f} m/s (moving {} frames: {:.4f}; "
-        "stopped {} frames: mean {:.4f} max {:.4f} m/s)\n",
+        "frames), position {:.4f} m, speed {:.4f} m/s (known {} frames: {:.4f}; moving {} "
+        "frames: {:.4f}; stopped {} frames: mean {:.4f} max {:.4f} m/s)\n",
         s.class_name, s.gt_id, s.matched, s.scored_frames, s.recall(), s.id_switches,
-        s.switchesPer100(), s.position_rmse_m, s.speed_rmse_mps, s.moving_frames,
-        s.speed_rmse_moving_mps, s.stopped_frames, s.speed_mean_stopped_mps,
-        s.speed_max_stopped_mps);
+        s.switchesPer100(), s.position_rmse_m, s.speed_rmse_mps, s.speed_known_frames,
+        s.speed_rmse_known_mps, s.moving_frames, s.speed_rmse_moving_mps, s.stopped_frames,
+        s.speed_mean_stopped_mps, s.speed_max_stopped_mps);
   return kExitOk;
 }
 

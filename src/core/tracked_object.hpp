@@ -27,6 +27,10 @@ struct TrackedObject {
   Vec3 p_camera = Vec3::Zero();  ///< the same in this frame's camera (m)
   Vec3 v_world_mps = Vec3::Zero();
   double speed_mps = 0.0;
+  /// The velocity is a measurement (its standard deviation is below the tracker's
+  /// objects.velocity_known_sigma_mps), not the prior of a track too young to have one: a new
+  /// track reports velocity zero with its prior covariance until then. Ground truth: always.
+  bool velocity_known = true;
   double heading_deg = 0.0;  ///< direction of motion in the world's x-z plane (atan2(vx, vz))
   double distance_m = 0.0;   ///< from the camera centre
   double bearing_deg = 0.0;  ///< right of the optical axis positive

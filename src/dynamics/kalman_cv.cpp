@@ -72,6 +72,13 @@ void KalmanCv::holdStill() {
   P_.bottomRightCorner<3, 3>() = Mat3::Identity() * 1e-4;
 }
 
+double KalmanCv::velocitySigma() const {
+  const Mat3 Pv = P_.bottomRightCorner<3, 3>();
+  const double lambda =
+      Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (Pv + Pv.transpose())).eigenvalues().maxCoeff();
+  return std::sqrt(std::max(0.0, lambda));
+}
+
 std::vector<PathPoint> KalmanCv::predictPath(double horizon_s, double step_s) const {
   std::vector<PathPoint> path;
   if (!(step_s > 0.0)) return path;

@@ -42,6 +42,8 @@ class KalmanCv {
   [[nodiscard]] Vec3 position() const { return x_.head<3>(); }
   [[nodiscard]] Vec3 velocity() const { return x_.tail<3>(); }
   [[nodiscard]] const Mat6& covariance() const { return P_; }
+  /// Standard deviation of the velocity along its least certain axis (m/s).
+  [[nodiscard]] double velocitySigma() const;
   /// Predicted centre every step_s up to horizon_s, with its spread.
   [[nodiscard]] std::vector<PathPoint> predictPath(double horizon_s, double step_s) const;
 

@@ -56,6 +56,7 @@ class ObjectTracker {
     int still = 0;            // frames in a row not found moving
     bool stationary = false;  // reported with zero velocity
     int inliers = 0;
+    int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
     double last_stamp_s = 0.0;
   };
   struct Carried {  // one track's points carried into this frame

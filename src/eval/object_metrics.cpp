@@ -10,6 +10,8 @@ namespace {
 
 struct Sums {
   double position2 = 0, speed2 = 0, velocity2 = 0, moving2 = 0, stopped = 0;
+  double known2 = 0;  // speed errors of frames whose estimate reports its velocity as known
+  int known = 0;
 };
 
 double rootMean(double sum2, int n) {
@@ -103,6 +105,12 @@ ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
       total.position2 += dp2;
       total.speed2 += ds * ds;
       total.velocity2 += dv2;
+      if (guess.velocity_known) {
+        sum.known2 += ds * ds;
+        ++sum.known;
+        total.known2 += ds * ds;
+        ++total.known;
+      }
       if (truth.speed_mps > options.moving_mps) {
         ++s.moving_frames;
         sum.moving2 += ds * ds;
@@ -119,12 +127,16 @@ ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
     s.speed_rmse_mps = rootMean(sum.speed2, s.matched);
     s.velocity_rmse_mps = rootMean(sum.velocity2, s.matched);
     s.speed_rmse_moving_mps = rootMean(sum.moving2, s.moving_frames);
+    s.speed_known_frames = sum.known;
+    s.speed_rmse_known_mps = rootMean(sum.known2, sum.known);
     s.speed_mean_stopped_mps = s.stopped_frames ? sum.stopped / s.stopped_frames : 0.0;
     out.objects.push_back(s);
   }
   out.position_rmse_m = rootMean(total.position2, out.matched);
   out.speed_rmse_mps = rootMean(total.speed2, out.matched);
   out.velocity_rmse_mps = rootMean(total.velocity2, out.matched);
+  out.speed_known_frames = total.known;
+  out.speed_rmse_known_mps = rootMean(total.known2, total.known);
   out.false_track_ids = int(false_ids.size());
   return out;
 }

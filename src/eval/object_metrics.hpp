@@ -5,6 +5,8 @@
 // max_match_m). Only ground-truth objects at least min_visible_share in view are scored
 // (objects_gt `in_view` = visible pixels / pixels of its whole silhouette alone, written by the
 // simulator); an estimate matched to a less visible object is neither scored nor false.
+// Speed RMSE is given over every matched frame and, separately, over the frames whose estimate
+// reports its velocity as known (a new track's first frames carry the prior, velocity zero).
 #include <cstdint>
 #include <map>
 #include <string>
@@ -35,6 +37,8 @@ struct ObjectScore {
   int stopped_frames = 0;  ///< matched frames standing still
   double speed_max_stopped_mps = 0.0;
   double speed_mean_stopped_mps = 0.0;
+  int speed_known_frames = 0;         ///< matched frames whose estimate has velocity_known
+  double speed_rmse_known_mps = 0.0;  ///< speed RMSE over those frames only
   [[nodiscard]] double recall() const {
     return scored_frames ? double(matched) / scored_frames : 0.0;
   }
@@ -52,6 +56,10 @@ struct ObjectMetrics {
   double position_rmse_m = 0.0;
   double speed_rmse_mps = 0.0;
   double velocity_rmse_mps = 0.0;
+  /// Matched frames whose estimate reports its velocity as known (TrackedObject::velocity_known;
+  /// a young track's prior is not) and the speed RMSE over them; speed_rmse_mps counts all.
+  int speed_known_frames = 0;
+  double speed_rmse_known_mps = 0.0;
   std::vector<ObjectScore> objects;  ///< per ground-truth id, ascending
   [[nodiscard]] double recall() const { return scored ? double(matched) / scored : 0.0; }
 };

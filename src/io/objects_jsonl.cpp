@@ -37,6 +37,7 @@ nlohmann::json toJson(const TrackedObject& o) {
                       {"clock", o.clock},
                       {"velocity_world", vec(o.v_world_mps)},
                       {"speed", round6(o.speed_mps)},
+                      {"velocity_known", o.velocity_known},
                       {"heading_deg", round6(o.heading_deg)},
                       {"points", o.points}};
   if (o.visible_share >= 0.0) j["in_view"] = round6(o.visible_share);
@@ -79,6 +80,7 @@ TrackedObject trackedObjectFromJson(const nlohmann::json& j) {
   o.clock = j.at("clock").get<int>();
   o.v_world_mps = vec3(j.at("velocity_world"));
   o.speed_mps = j.at("speed").get<double>();
+  o.velocity_known = j.value("velocity_known", true);  // files written before it: known
   o.points = j.at("points").get<int>();
   o.heading_deg = j.value("heading_deg", 0.0);
   o.visible_share = j.value("in_view", -1.0);

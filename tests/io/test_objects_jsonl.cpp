@@ -23,6 +23,7 @@ TEST(ObjectsJsonl, RoundTrip) {
   a.points = 123;
   a.missed_frames = 2;
   a.motion_inliers = 99;
+  a.velocity_known = false;  // a young track: its velocity is the prior
   for (int k = 0; k < 6; ++k) a.covariance(k, k) = 0.01 * (k + 1);
   a.covariance(0, 3) = a.covariance(3, 0) = 0.002;
   a.predicted_path = {{0.5, Vec3(1.7, -0.5, 2.8), 0.2}, {1.0, Vec3(2.15, -0.5, 2.6), 0.5}};
@@ -54,11 +55,13 @@ TEST(ObjectsJsonl, RoundTrip) {
   EXPECT_EQ(ra.clock, a.clock);
   EXPECT_EQ(ra.points, 123);
   EXPECT_EQ(ra.missed_frames, 2);
+  EXPECT_FALSE(ra.velocity_known);
   EXPECT_LT((ra.covariance - a.covariance).norm(), 1e-6);
   ASSERT_EQ(ra.predicted_path.size(), 2u);
   EXPECT_TRUE(ra.predicted_path[1].p_world.isApprox(a.predicted_path[1].p_world, 1e-9));
   const TrackedObject& rb = frames[0].objects[1];
   EXPECT_NEAR(rb.visible_share, 0.42, 1e-9);
+  EXPECT_TRUE(rb.velocity_known);
   EXPECT_TRUE(rb.covariance.isZero());
   EXPECT_LT(ra.predicted_path.size() + rb.predicted_path.size(), 3u);
 }

@@ -23,6 +23,8 @@ struct ObjectTrackingConfig {
   double accel_sigma_mps2 = 1.0;
   double position_sigma_m = 0.05;
   double velocity_sigma_mps = 0.6;
+  int motion_velocity_frames = 10;
+  double velocity_known_sigma_mps = 0.3;
   int static_after_frames = 3;
   double static_speed_mps = 0.25;
   double path_horizon_s = 3.0;
@@ -73,6 +75,16 @@ struct ObjectTrackingConfig {
       "Kalman filter: noise of the one-frame centroid velocity (m/s; measured 0.25-0.56 per axis "
       "on "
       "the simulated walkers, with a bias of -0.3 along the walk)",
+      Range{0, 100, Range::kOpenLow});
+    v("motion_velocity_frames", motion_velocity_frames,
+      "the one-frame rigid-motion velocity enters the filter only until the object's centre has "
+      "been measured whole (in view, trunk found) this many frames in a row, or while it is not: "
+      "its error is a bias (dense flow under-reads smooth clothes) that filtering does not "
+      "average out; the centre track's does not have it (-1: always)",
+      Range{-1, 100000});
+    v("velocity_known_sigma_mps", velocity_known_sigma_mps,
+      "a track reports its velocity as known (objects.jsonl velocity_known) once the filter's "
+      "velocity standard deviation (largest axis) is below this (m/s); until then it is the prior",
       Range{0, 100, Range::kOpenLow});
     v("static_after_frames", static_after_frames,
       "an object not found moving for this many frames in a row and measured slower than "
