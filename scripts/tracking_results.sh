@@ -9,11 +9,7 @@ W=${1:-/tmp/dynanav_tracking}
 mkdir -p "$W"
 # The 14 m approach hall leaves fewer than the default 500 keypoints with depth in its first
 # frames (depth ends at 4.5 m): SLAM is allowed to start with 150 in every row of this table.
-# The filter's unmodelled acceleration is 0.5 m/s^2 (objects.accel_sigma_mps2; the built-in
-# default is still 1.0): walkers keep their velocity for seconds, and with 1.0 the velocity
-# covariance of a track carried by its centres stayed ~2.5x wider than its error
-# (docs/tracking.md).
-common='tracking:\n  init_min_depth_features: 150\nobjects:\n  accel_sigma_mps2: 0.5\n'
+common='tracking:\n  init_min_depth_features: 150\n'
 printf "$common" > "$W/clean.yaml"
 for g in 5 -5; do
   printf "${common}perception:\n  mask_noise_grow_px: %s\n  mask_noise_drop_share: 0.2\n" "$g" > "$W/noisy$g.yaml"

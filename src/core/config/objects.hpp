@@ -20,7 +20,7 @@ struct ObjectTrackingConfig {
   double ransac_reprojection_px = 2.0;
   double refine_huber_px = 1.0;
   int refine_iterations = 10;
-  double accel_sigma_mps2 = 1.0;
+  double accel_sigma_mps2 = 0.5;
   double position_sigma_m = 0.05;
   double velocity_sigma_mps = 0.6;
   int motion_velocity_frames = 10;
