@@ -25,7 +25,7 @@ ate() {  # ate SEQ RUN_DIR -> "rmse tracked/total"
     awk '/^ATE/ {a=$3} /^coverage/ {c=$2} END {print a, c}'
 }
 flagged() {  # flagged RUN_DIR -> "dynamic total share%" over the run ("-" with dynamics off)
-  jq -r 'if .dynamics == null then "- - -" else
+  jq -r 'if (.dynamics.enabled | not) then "- - -" else
            (.dynamics.per_frame.dynamic_keypoints | add) as $d |
            (.dynamics.per_frame.static_keypoints | add) as $s |
            "\($d) \($d + $s) \(if $d + $s > 0 then 100 * $d / ($d + $s) * 1000 | round / 1000 else 0 end)"

@@ -100,8 +100,11 @@ TEST(SimMotionBlur, ExposureSmearsAlongTheImageMotionOnly) {
   const double gx_sharp = meanGradient(sharp.bgr, true), gx_blur = meanGradient(blurred.bgr, true);
   const double gy_sharp = meanGradient(sharp.bgr, false),
                gy_blur = meanGradient(blurred.bgr, false);
-  EXPECT_LT(gx_blur, 0.6 * gx_sharp) << "horizontal detail smeared by the turn";
-  EXPECT_GT(gy_blur, 0.8 * gy_sharp) << "vertical detail mostly kept (the motion is sideways)";
+  // Diagonal texture loses some vertical contrast to a sideways smear too, but far less.
+  const double kept_x = gx_blur / gx_sharp, kept_y = gy_blur / gy_sharp;
+  EXPECT_LT(kept_x, 0.6) << "horizontal detail smeared by the turn";
+  EXPECT_LT(kept_x, 0.75 * kept_y)
+      << "the smear is along the motion (sideways): x " << kept_x << ", y " << kept_y;
   // Averaging keeps the brightness; depth and masks stay those of the frame's instant.
   EXPECT_NEAR(cv::mean(blurred.bgr)[0], cv::mean(sharp.bgr)[0], 1.5);
   EXPECT_EQ(cv::norm(blurred.depth_true_m, sharp.depth_true_m, cv::NORM_INF), 0.0);
