@@ -66,6 +66,11 @@ void registerSimulate(CLI::App& root, Action& chosen) {
          "rolling-shutter readout of the camera (ms; 0 = global shutter, the default); written to "
          "camera.yaml")
       ->check(finiteRange(0.0, 1000.0));
+  sub->add_option_function<double>(
+         "--exposure-ms", [args](double ms) { args->options.exposure_s = ms * 1e-3; },
+         "exposure time of the colour camera (ms; 0 = instantaneous, the default): motion blur, "
+         "each row's colour averaged over its exposure")
+      ->check(finiteRange(0.0, 1000.0));
   sub->add_flag("!--no-photos", args->options.photos,
                 "posters without the opencv-doc example photos");
   sub->add_flag("--list", args->list, "list the scenarios and exit");

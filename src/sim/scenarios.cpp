@@ -93,7 +93,8 @@ void furnishOffice(Stage& st, bool pillar = true) {
   b.cabinet({4.5, 0.23}, kNorth);
 }
 
-std::unique_ptr<Scene> staticRoom(Stage& st) {
+/// The static room's furniture: a double bookcase across the middle, furniture along the walls.
+void furnishStaticRoom(Stage& st) {
   WorldBuilder& b = st.build;
   // A 6 x 6.5 m room with a free-standing double bookcase across it: the wearer walks up to the
   // bookcase, turns right along it and walks on beside the west wall. Nearly everything in view
@@ -114,8 +115,39 @@ std::unique_ptr<Scene> staticRoom(Stage& st) {
   b.desk({4.8, 6.1}, kSouth);
   b.closedDoor({1.2, 0.0}, kNorth);
   b.bin({2.2, 0.4});
-  st.wearer({{3.6, 0.5}, {3.4, 1.6}, {1.6, 3.3}, {1.6, 5.0}}, 0.7, 1.6);
   st.scene->duration_s = 10.0;
+}
+
+std::unique_ptr<Scene> staticRoom(Stage& st) {
+  furnishStaticRoom(st);
+  st.wearer({{3.6, 0.5}, {3.4, 1.6}, {1.6, 3.3}, {1.6, 5.0}}, 0.7, 1.6);
+  return std::move(st.scene);
+}
+
+/// The head-turn walk: slowly and straight up the room west of the bookcase (its path does not
+/// turn, so the camera's yaw rate is the head's), turning and nodding all the way.
+void headTurnWalk(Stage& st) {
+  st.wearer({{2.0, 0.5}, {2.0, 3.2}}, 0.35, 1.0);
+  st.scene->head.turns = headTurnScript();
+}
+
+std::unique_ptr<Scene> headTurns(Stage& st) {
+  furnishStaticRoom(st);
+  headTurnWalk(st);
+  return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> headTurnsWalkers(Stage& st) {
+  furnishStaticRoom(st);
+  headTurnWalk(st);
+  // One walker crosses the room in front of the bookcase and walks on beside it; the other
+  // walks down the east side and comes back. Both stay clear of the wearer's walk.
+  st.person(1, Motion({5.2, 3.2}, kWest)
+                   .wait(1.0)
+                   .walk(SmoothPath({{5.2, 3.2}, {2.3, 3.2}, {2.0, 5.8}, {3.6, 5.6}}, 0.6), 1.0));
+  st.person(2, Motion({5.05, 5.4}, kSouth)
+                   .wait(0.8)
+                   .walk(SmoothPath({{5.05, 5.4}, {5.05, 1.2}, {4.4, 1.2}, {4.4, 2.8}}, 0.5), 1.1));
   return std::move(st.scene);
 }
 
@@ -348,6 +380,11 @@ const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
       {{"pushed-box", "a person pushes a box 1 m and walks away (a non-prior mover)"}, pushedBox},
       {{"loop", "the wearer walks a ~21 m loop through two rooms and back to the start"}, loop},
       {{"standing", "three people stand and talk; after 3 s one walks off"}, standing},
+      {{"head-turns",
+        "static-room's furniture; the wearer turns the head fast (150 deg/s) and nods"},
+       headTurns},
+      {{"head-turns-walkers", "head-turns with two people walking about the room"},
+       headTurnsWalkers},
   };
   return list;
 }
@@ -361,6 +398,23 @@ ApproachScript approachScript(uint64_t seed) {
   a.offset_m = rng.uniform(0.2, 0.6) * (rng.chance(0.5) ? 1.0 : -1.0);
   a.walker_wait_s = rng.uniform(0.3, 1.2);
   return a;
+}
+
+std::vector<HeadTurn> headTurnScript() {
+  const double deg = kPi / 180.0;
+  // Each yaw turn of A over D peaks at 2 A / D: 60 deg in 0.8 s and 120 deg in 1.6 s reach
+  // script::kHeadTurnPeakYawDegPs. Nods of 20 deg in 0.5 s peak at 80 deg/s.
+  return {
+      {1.5, 0.8, 60 * deg, 0.0},        // look aside (yaw in the heading's sense)
+      {2.6, 0.5, 0.0, -20 * deg},       // nod down
+      {3.2, 0.5, 0.0, 20 * deg},        // and up
+      {3.9, 1.6, -120 * deg, 0.0},      // sweep across to the other side
+      {6.0, 0.8, 60 * deg, 0.0},        // back to the walking direction
+      {7.0, 0.6, 30 * deg, -15 * deg},  // glance down to one side
+      {7.8, 0.6, -30 * deg, 15 * deg},  // and back
+      {8.6, 0.4, 0.0, -20 * deg},       // quick nods: 100 deg/s
+      {9.1, 0.4, 0.0, 20 * deg},
+  };
 }
 
 const std::vector<ScenarioInfo>& scenarioList() {

@@ -36,7 +36,15 @@ constexpr double kLoopMinLengthM = 15.0;     ///< loop: the wearer's path is at 
 constexpr double kNearCrossingAheadM = 0.5;  ///< crossing-near: wearer-to-path distance then
 constexpr double kParallelOffsetM = 3.0;     ///< parallel: lateral distance of the walker's line
 constexpr double kAwaySpeedMps = 1.3;        ///< walking-away: the walker's speed
+constexpr double kHeadTurnPeakYawDegPs = 150.0;  ///< head-turns: peak yaw rate of the turns
+constexpr double kHeadNodPeakDegPs = 100.0;      ///< head-turns: peak pitch rate of the nods
 }  // namespace script
+
+/// The head movements of `head-turns` and `head-turns-walkers` (issue 18): yaw turns of 60 and
+/// 120 deg at up to kHeadTurnPeakYawDegPs, nods of 15-20 deg at up to kHeadNodPeakDegPs, from
+/// t = 1.5 s (after the SLAM has started) to 9.5 s, on top of a slow straight walk (0.35 m/s)
+/// through static-room's furniture.
+std::vector<HeadTurn> headTurnScript();
 
 /// The approach encounter a seed draws (an independent stream: textures do not change with it).
 struct ApproachScript {

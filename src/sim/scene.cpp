@@ -1,5 +1,6 @@
 #include "sim/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynanav::sim {
@@ -17,6 +18,21 @@ Mat3 cameraRotation(double yaw, double pitch, double roll) {
   return R;
 }
 
+HeadTurnAngles headTurnAngles(const std::vector<HeadTurn>& turns, double t) {
+  HeadTurnAngles sum;
+  for (const HeadTurn& turn : turns) {
+    const double tau = std::clamp((t - turn.start_s) / turn.duration_s, 0.0, 1.0);
+    const double share = tau - std::sin(2.0 * M_PI * tau) / (2.0 * M_PI);
+    sum.yaw_rad += share * turn.yaw_rad;
+    sum.pitch_rad += share * turn.pitch_rad;
+  }
+  return sum;
+}
+
+double headTurnPeakRate(double angle_rad, double duration_s) {
+  return 2.0 * std::abs(angle_rad) / duration_s;
+}
+
 SE3 Scene::T_room_camera(double t) const {
   const MotionState st = wearer.at(t);
   const HeadMotion& h = head;
@@ -26,9 +42,11 @@ SE3 Scene::T_room_camera(double t) const {
   const double look =
       h.look_around_rad * std::sin(2.0 * M_PI * t / h.look_period_s) +
       0.4 * h.look_around_rad * std::sin(2.0 * M_PI * t / (0.37 * h.look_period_s) + 1.0);
-  const double yaw =
-      st.heading_rad + h.yaw_offset_rad + look + amount * h.yaw_sway_rad * std::sin(phase);
-  const double pitch = h.pitch_rad + amount * h.pitch_sway_rad * std::sin(2.0 * phase) +
+  const HeadTurnAngles turned = headTurnAngles(h.turns, t);
+  const double yaw = st.heading_rad + h.yaw_offset_rad + turned.yaw_rad + look +
+                     amount * h.yaw_sway_rad * std::sin(phase);
+  const double pitch = h.pitch_rad + turned.pitch_rad +
+                       amount * h.pitch_sway_rad * std::sin(2.0 * phase) +
                        0.3 * h.look_around_rad * std::sin(2.0 * M_PI * t / (1.3 * h.look_period_s));
   const double roll = amount * h.roll_sway_rad * std::sin(phase + 0.5);
   const Vec3 left_of_path(std::cos(st.heading_rad), 0.0, -std::sin(st.heading_rad));

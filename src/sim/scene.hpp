@@ -24,6 +24,27 @@ struct Mover {
   double pushing_from = 1e9, pushing_to = -1e9;  ///< people: arms forward in this time window
 };
 
+/// A scripted head movement (issue 18): over [start_s, start_s + duration_s] the head turns by
+/// yaw_rad (added to the heading, same sense) and pitches by pitch_rad (positive: up) with a
+/// raised-cosine rate, angle(tau) = A (tau - sin(2 pi tau) / (2 pi)), tau = (t - start_s) /
+/// duration_s: the rate starts and ends at zero (no jerk into a turn) and peaks at 2 A / duration_s
+/// mid-way. After the movement the head keeps the new direction.
+struct HeadTurn {
+  double start_s = 0.0;
+  double duration_s = 1.0;
+  double yaw_rad = 0.0;
+  double pitch_rad = 0.0;
+};
+
+/// Yaw and pitch (rad) that the turns have added by time t, summed over every turn.
+struct HeadTurnAngles {
+  double yaw_rad = 0.0;
+  double pitch_rad = 0.0;
+};
+HeadTurnAngles headTurnAngles(const std::vector<HeadTurn>& turns, double t);
+/// Peak rate (rad/s) of a turn of `angle_rad` over `duration_s` (2 A / D).
+double headTurnPeakRate(double angle_rad, double duration_s);
+
 /// How the wearer's head moves on top of the walked path.
 struct HeadMotion {
   double eye_height_m = 1.6;
@@ -37,6 +58,7 @@ struct HeadMotion {
   double look_period_s = 7.0;
   double nominal_speed_mps = 1.0;  ///< speed at which the sway amplitudes apply in full
   double yaw_offset_rad = 0.0;     ///< the head turned this far right of the walking direction
+  std::vector<HeadTurn> turns;     ///< fast head turns and nods on top of the sway (issue 18)
 };
 
 class Scene {

@@ -1,5 +1,6 @@
 #include "sim/simulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -14,6 +15,9 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
   if (options.frames < 0) throw InputError("--frames", "must be >= 0 (0 = the scenario's length)");
   if (!(options.texels_per_m >= 10.0f && options.texels_per_m <= 1000.0f))
     throw InputError("texels_per_m", "must be in [10, 1000]");
+  if (!(options.exposure_s >= 0.0 && options.exposure_s <= 1.0 / options.fps))
+    throw InputError("--exposure-ms", "must be in [0, frame period = " +
+                                          std::to_string(1000.0 / options.fps) + " ms]");
   if (!(options.readout_s >= 0.0 && options.readout_s <= 1.0 / options.fps))
     throw InputError("--rolling-shutter-ms", "must be in [0, frame period = " +
                                                  std::to_string(1000.0 / options.fps) + " ms]");
@@ -76,9 +80,7 @@ SimFrame Simulator::render(int i) {
   if (options_.readout_s > 0.0) {
     renderRollingShutter(f, lighting, buffers);
   } else {
-    drawItems(i, items_);
-    rasterizer_.render(camera_, f.T_world_camera.inverse().cast<float>(), items_,
-                       scene_->world.textures, buffers, lighting);
+    renderRows(f.stamp_s, f.T_world_camera, 0, camera_.height, lighting, buffers);
   }
   f.bgr = buffers.bgr;
   f.depth_true_m = buffers.depth_m;
@@ -94,7 +96,8 @@ SimFrame Simulator::render(int i) {
     for (int x = 0; x < f.instance.cols; ++x) ++pixels[row[x]];
   }
   const SE3 T_camera_world = f.T_world_camera.inverse();
-  if (options_.readout_s > 0.0) drawItems(i, items_);  // the bands left the last band's scene
+  // Bands and exposure instants left another instant's scene in items_.
+  if (options_.readout_s > 0.0 || options_.exposure_s > 0.0) drawItems(i, items_);
   std::vector<TrackedObject> objects;
   for (const Mover& m : scene_->movers) {
     TrackedObject& o = objects.emplace_back();
@@ -138,11 +141,49 @@ void Simulator::renderRollingShutter(const SimFrame& f, const Lighting& lighting
   for (int y0 = 0; y0 < camera_.height; y0 += kBandRows) {
     const int y1 = std::min(camera_.height, y0 + kBandRows);
     const double t = f.stamp_s + (0.5 * (y0 + y1) / camera_.height - 0.5) * options_.readout_s;
-    const SE3 T_world_camera = T_world_room_ * scene_->T_room_camera(t);
-    drawItemsAt(t, items_);
-    rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), items_,
-                       scene_->world.textures, out, lighting, y0, y1);
+    renderRows(t, T_world_room_ * scene_->T_room_camera(t), y0, y1, lighting, out);
   }
+}
+
+void Simulator::renderRows(double t, const SE3& T_world_camera, int y0, int y1,
+                           const Lighting& lighting, RenderBuffers& out) {
+  drawItemsAt(t, items_);
+  rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), items_,
+                     scene_->world.textures, out, lighting, y0, y1);
+  if (options_.exposure_s > 0.0) blurRows(t, y0, y1, lighting, out);
+}
+
+void Simulator::blurRows(double t, int y0, int y1, const Lighting& lighting, RenderBuffers& out) {
+  const double exposure = options_.exposure_s;
+  const int n = exposureSamples(*scene_, camera_, t, exposure);
+  if (n <= 1) return;  // nothing moves far enough to blur: the instant at t stands for all
+  cv::Mat sum(y1 - y0, camera_.width, CV_32FC3, cv::Scalar::all(0.0));
+  cv::Mat sample;
+  for (int k = 0; k < n; ++k) {
+    // Midpoints of n equal slices of the exposure (a box shutter, integrated by the midpoint rule).
+    const double tk = t + ((k + 0.5) / n - 0.5) * exposure;
+    drawItemsAt(tk, items_);
+    const SE3 T_world_camera = T_world_room_ * scene_->T_room_camera(tk);
+    rasterizer_.render(camera_, T_world_camera.inverse().cast<float>(), items_,
+                       scene_->world.textures, exposure_sample_, lighting, y0, y1);
+    exposure_sample_.bgr.rowRange(y0, y1).convertTo(sample, CV_32FC3);
+    sum += sample;
+  }
+  sum.convertTo(out.bgr.rowRange(y0, y1), CV_8UC3, 1.0 / n);  // rounds to nearest
+}
+
+int exposureSamples(const Scene& scene, const PinholeCamera& camera, double t, double exposure_s) {
+  if (!(exposure_s > 0.0)) return 1;
+  const SE3 a = scene.T_room_camera(t - exposure_s / 2),
+            b = scene.T_room_camera(t + exposure_s / 2);
+  double travel_px = rotationAngle(a.linear().transpose() * b.linear()) * camera.fx;
+  double travel_m = (b.translation() - a.translation()).norm();
+  for (const Mover& m : scene.movers)
+    travel_m = std::max(travel_m, (scene.moverCentre(m, t + exposure_s / 2) -
+                                   scene.moverCentre(m, t - exposure_s / 2))
+                                      .norm());
+  travel_px += travel_m * camera.fx / 1.0;  // seen at 1 m
+  return std::clamp(int(std::ceil(travel_px / kExposureStepPx)) + 1, 1, kMaxExposureSamples);
 }
 
 }  // namespace dynanav::sim

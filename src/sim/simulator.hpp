@@ -29,6 +29,11 @@ struct SimOptions {
   /// (v/H - 1/2) * readout after the frame's stamp (the middle row's time, which the ground
   /// truth pose describes). 0 = global shutter.
   double readout_s = 0.0;
+  /// Exposure time (s) of the colour camera (issue 18): each row's colour is the mean of renders
+  /// at times spread evenly over [t_row - E/2, t_row + E/2], so whatever moves across the image
+  /// during the exposure (the camera turning, a walker) is smeared along its own image path:
+  /// motion blur. Depth and masks stay those of t_row. 0 = an instantaneous exposure.
+  double exposure_s = 0.0;
   DepthSensorModel depth;
   ColourSensorModel colour;
 };
@@ -77,13 +82,28 @@ class Simulator {
   int frames_ = 0;
   /// Renders frame f's image band by band, each band from the pose and scene at its rows' time.
   void renderRollingShutter(const SimFrame& f, const Lighting& lighting, RenderBuffers& out);
+  /// Renders rows [y0, y1) as seen at time t from T_world_camera (the pose at t), with motion
+  /// blur over the exposure when options_.exposure_s > 0.
+  void renderRows(double t, const SE3& T_world_camera, int y0, int y1, const Lighting& lighting,
+                  RenderBuffers& out);
+  /// Replaces the colour of rows [y0, y1) by the mean over the exposure centred on t.
+  void blurRows(double t, int y0, int y1, const Lighting& lighting, RenderBuffers& out);
   /// Share of object `id`'s whole silhouette (inside the image or not, occluded or not) that
   /// shows in this frame: visible_px / the pixels it would cover alone on an unbounded image.
   /// Uses items_ (this frame's scene).
   double inViewShare(uint16_t id, int visible_px, const SE3& T_camera_world);
   Rasterizer rasterizer_;
   std::vector<DrawItem> items_, silhouette_items_;
+  RenderBuffers exposure_sample_;  // one instant of the exposure (blurRows)
 };
+
+/// How many instants blurRows averages over an exposure of `exposure_s` centred on t: enough
+/// that consecutive instants are at most kExposureStepPx apart in the image, for the camera's
+/// rotation (angle x fx), its translation and the fastest mover seen at 1 m
+/// (displacement x fx / 1 m); 1 (no blur) for a still scene, at most kMaxExposureSamples.
+constexpr double kExposureStepPx = 1.5;
+constexpr int kMaxExposureSamples = 16;
+int exposureSamples(const Scene& scene, const PinholeCamera& camera, double t, double exposure_s);
 
 struct WriteStats {
   int frames = 0;

@@ -209,10 +209,12 @@ TEST(SimCamera, FirstPoseIsIdentityAndMotionIsTrackable) {
       max_rate_deg = std::max(
           max_rate_deg, rotationAngle(a.linear().transpose() * b.linear()) / dt * 180.0 / M_PI);
     }
-    // A head-worn camera at walking pace: no jumps, turns a feature tracker can follow.
+    // A head-worn camera at walking pace: no jumps, turns a feature tracker can follow (the
+    // head-turns scenarios turn fast on purpose: test_sim_head_turns.cpp bounds them).
+    const bool fast_turns = info.name.rfind("head-turns", 0) == 0;
     EXPECT_LT(max_speed, 1.3) << info.name;
-    EXPECT_LT(max_rate_deg, 40.0) << info.name;
-    EXPECT_GT(max_speed, 0.5) << info.name << ": the wearer walks";
+    EXPECT_LT(max_rate_deg, fast_turns ? 160.0 : 40.0) << info.name;
+    EXPECT_GT(max_speed, fast_turns ? 0.3 : 0.5) << info.name << ": the wearer walks";
   }
 }
 

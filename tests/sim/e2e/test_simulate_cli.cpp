@@ -148,6 +148,11 @@ TEST(SimulateCli, BadInputExitsWithCodeTwoAndSaysWhy) {
              &out),
       2);
   EXPECT_FALSE(fs::exists(dir / "r")) << "nothing written for a bad readout";
+  EXPECT_EQ(
+      runCli("simulate --scenario head-turns --exposure-ms 40 --out " + (dir / "e").string(), &out),
+      2);
+  EXPECT_NE(out.find("frame period"), std::string::npos) << out;  // 40 ms > 33 ms at 30 fps
+  EXPECT_FALSE(fs::exists(dir / "e")) << "nothing written for a bad exposure";
   EXPECT_FALSE(fs::exists(dir / "x")) << "nothing written for a bad scenario";
 }
 
@@ -199,6 +204,41 @@ TEST(SimulateCli, RollingShutterWalkIsTrackedWithTheReadoutFromCameraYaml) {
   }
   EXPECT_LT(ate[0], 0.007);
   EXPECT_GT(ate[1], 1.5 * ate[0]) << "re-timed " << ate[0] << ", as global shutter " << ate[1];
+}
+
+/// Issue 18: the fast head turns (150 deg/s) seen through a 25 ms rolling shutter with a 10 ms
+/// exposure (motion blur) in a static room, half the scene (5 s: the first 60-degree turn, two
+/// nods and most of the 120-degree sweep). SLAM must track every frame with the readout from
+/// camera.yaml, and with geometry-only dynamics flag only a small share of the (all static)
+/// keypoints (docs/dynamics.md has the whole scene's figures).
+// Measured (2026-12-02): ATE 0.0102 m, 250 of 149988 keypoints flagged (0.17 %).
+constexpr double kHeadTurnAteBoundM = 0.015;
+constexpr double kHeadTurnFlaggedShareBound = 0.005;  // issue 18's target: < 1 %
+
+TEST(SimulateCli, FastHeadTurnsWithBlurAndRollingShutterAreTracked) {
+  const fs::path dir = scratchDir("sim_head_turns");
+  const fs::path seq = dir / "head-turns";
+  ASSERT_EQ(runCli("simulate --scenario head-turns --frames 150 --rolling-shutter-ms 25 "
+                   "--exposure-ms 10 --out " +
+                   seq.string()),
+            0);
+  std::string log;
+  const int code = runCli("run " + seq.string() + " --out " + (dir / "run").string() +
+                              " --deterministic --quiet --segmenter none",
+                          &log);
+  if (log.find("not built yet") != std::string::npos)
+    GTEST_SKIP() << "'dynanav run' is not built yet: " << log;
+  ASSERT_EQ(code, 0) << log;
+  EXPECT_EQ(readTrajectory(dir / "run" / "trajectory.txt").size(), 150u) << "every frame tracked";
+  EXPECT_LT(test::ateRmse(seq / "groundtruth.txt", dir / "run" / "trajectory.txt"),
+            kHeadTurnAteBoundM);
+  const auto stats = nlohmann::json::parse(readFile(dir / "run" / "stats.json"));
+  double flagged = 0, kept = 0;
+  for (const auto& v : stats["dynamics"]["per_frame"]["dynamic_keypoints"])
+    flagged += v.get<double>();
+  for (const auto& v : stats["dynamics"]["per_frame"]["static_keypoints"]) kept += v.get<double>();
+  EXPECT_GT(kept, 0.0);
+  EXPECT_LT(flagged / (flagged + kept), kHeadTurnFlaggedShareBound) << "nothing moves here";
 }
 
 }  // namespace
