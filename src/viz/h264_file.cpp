@@ -8,6 +8,7 @@ extern "C" {
 #include <libavformat/avformat.h>
 #include <libavutil/dict.h>
 #include <libavutil/error.h>
+#include <libavutil/log.h>
 #include <libavutil/frame.h>
 #include <libswscale/swscale.h>
 }
@@ -86,6 +87,9 @@ struct H264File::Impl {
       const int got = avcodec_receive_packet(codec, packet);
       if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) return true;
       if (got < 0) return false;
+      // Every frame lasts one tick; without a duration the mp4's last sample has none and
+      // readers drop it.
+      if (packet->duration == 0) packet->duration = 1;
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       if (av_interleaved_write_frame(format, packet) < 0) return false;  // unrefs the packet
@@ -108,6 +112,9 @@ std::unique_ptr<H264File> H264File::open(const std::filesystem::path& path, cv::
     if (error) *error = std::move(why);
     return nullptr;
   };
+  // x264 prints its banner and settings at FFmpeg's default level "info": keep a run's log to
+  // warnings (OpenCV's FFmpeg backend does the same, for the same process-wide setting).
+  av_log_set_level(AV_LOG_WARNING);
   auto impl = std::make_unique<Impl>();
   impl->size = {size.width & ~1, size.height & ~1};
   if (impl->size.width <= 0 || impl->size.height <= 0 || fps <= 0)
