@@ -12,6 +12,7 @@ packages=(
   clang libclang-rt-14-dev   # the fuzz preset (libFuzzer), scripts/fuzz.sh
   opencv-doc
   liboctomap-dev chromium   # static map (issue 15); report.html's browser test
+  libavformat-dev libavcodec-dev libswscale-dev   # annotated.mp4's H.264 (issue 15)
   libespeak-ng-dev espeak-ng-data libopenal-dev libopenal-data libsndfile1-dev   # speech, HRTF audio (issue 14)
   libopenni2-dev            # live OpenNI2 cameras and .oni playback (issue 16); optional in CMake
   python3-numpy python3-opencv openssl   # tools/tfjs_to_pb, its tests, fetch_models.sh's checks

@@ -51,7 +51,9 @@ void registerSegment(CLI::App& root, Action& chosen) {
       options.max_frames = args->max_frames;
       // The overlay video (OUT/overlay.mp4, H.264; else .avi, MJPG) and contact sheets: viz/.
       std::optional<VideoOutput> video;
-      if (!args->no_video) video.emplace(options.out_dir, "overlay", 30.0);
+      if (!args->no_video)
+        video.emplace(options.out_dir, "overlay", 30.0,
+                      videoEncoderOptions(config.outputs.video_encoder_options));
       std::optional<ContactSheets> sheets;
       if (args->contact_sheets) sheets.emplace((options.out_dir / "contact").string());
       if (video || sheets)

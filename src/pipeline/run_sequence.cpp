@@ -91,7 +91,9 @@ RunSummary runSequence(const RunOptions& options) {
   std::optional<VideoSink> video_sink;
   std::optional<ReportSink> report_sink;
   if (outputs.map) sinks.push_back(&map_sink.emplace(options.out_dir, outputs, source.camera()));
-  if (outputs.video) sinks.push_back(&video_sink.emplace(options.out_dir, source.camera()));
+  if (outputs.video)
+    sinks.push_back(
+        &video_sink.emplace(options.out_dir, source.camera(), outputs.video_encoder_options));
   if (outputs.report) sinks.push_back(&report_sink.emplace(options.out_dir, options.sequence_dir));
   if (options.progress) sinks.push_back(&progress);
 

@@ -24,8 +24,11 @@ std::vector<InstanceStatus> instanceStatuses(const FrameResult& result) {
   return out;
 }
 
-VideoSink::VideoSink(std::filesystem::path out_dir, const PinholeCamera& camera, double fps)
-    : camera_(camera), video_(std::move(out_dir), "annotated", fps), worker_([this] { work(); }) {}
+VideoSink::VideoSink(std::filesystem::path out_dir, const PinholeCamera& camera,
+                     const std::string& encoder_options, double fps)
+    : camera_(camera),
+      video_(std::move(out_dir), "annotated", fps, videoEncoderOptions(encoder_options)),
+      worker_([this] { work(); }) {}
 
 VideoSink::~VideoSink() {
   stop();
@@ -64,13 +67,17 @@ void VideoSink::work() {
       changed_.notify_all();
     }
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0_ms = threadCpuMs();
     const Instances& instances =
         job.instances.labels.empty() ? Instances::none(job.bgr.size()) : job.instances;
     const cv::Mat annotated = annotateFrame(job.bgr, instances, camera_, job.annotation);
     const auto t1 = std::chrono::steady_clock::now();
-    video_.write(annotated);
+    const double cpu1_ms = threadCpuMs();
+    video_.write(annotated);  // x264 runs on this thread (threads=1 by default)
     draw_ms_ += std::chrono::duration<double, std::milli>(t1 - t0).count();
     encode_ms_ += msSince(t1);
+    draw_cpu_ms_ += cpu1_ms - cpu0_ms;
+    encode_cpu_ms_ += threadCpuMs() - cpu1_ms;
   }
 }
 
@@ -86,11 +93,13 @@ void VideoSink::stop() {
 
 void VideoSink::finish(const RunEnd&) {
   stop();  // drains the queue first
+  const auto perFrame = [this](double total_ms) { return total_ms / std::max(1, video_.frames()); };
   if (!video_.path().empty())
     spdlog::info(
-        "video: {} ({} frames, fourcc {}); per frame {:.1f} ms drawing, {:.1f} ms encoding",
-        video_.path().string(), video_.frames(), video_.fourcc(),
-        draw_ms_ / std::max(1, video_.frames()), encode_ms_ / std::max(1, video_.frames()));
+        "video: {} ({} frames, fourcc {}); per frame {:.1f} ms drawing, {:.1f} ms encoding "
+        "(CPU of the video thread: {:.1f} + {:.1f} ms)",
+        video_.path().string(), video_.frames(), video_.fourcc(), perFrame(draw_ms_),
+        perFrame(encode_ms_), perFrame(draw_cpu_ms_), perFrame(encode_cpu_ms_));
 }
 
 }  // namespace dynanav

@@ -23,7 +23,9 @@ std::vector<InstanceStatus> instanceStatuses(const FrameResult& result);
 
 class VideoSink final : public FrameSink {
  public:
-  VideoSink(std::filesystem::path out_dir, const PinholeCamera& camera, double fps = 30.0);
+  /// ENCODER_OPTIONS: `outputs.video_encoder_options` (a ConfigError when it does not parse).
+  VideoSink(std::filesystem::path out_dir, const PinholeCamera& camera,
+            const std::string& encoder_options, double fps = 30.0);
   ~VideoSink() override;
   VideoSink(const VideoSink&) = delete;
   VideoSink& operator=(const VideoSink&) = delete;
@@ -41,8 +43,9 @@ class VideoSink final : public FrameSink {
 
   PinholeCamera camera_;
   VideoOutput video_;
-  std::optional<FeedbackEvent> message_;    ///< the latest one, shown for a few seconds
-  double draw_ms_ = 0.0, encode_ms_ = 0.0;  ///< worker thread only
+  std::optional<FeedbackEvent> message_;            ///< the latest one, shown for a few seconds
+  double draw_ms_ = 0.0, encode_ms_ = 0.0;          ///< wall time; worker thread only
+  double draw_cpu_ms_ = 0.0, encode_cpu_ms_ = 0.0;  ///< the worker thread's CPU time
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Job> jobs_;

@@ -1,8 +1,8 @@
-// Unit tests of viz (issue 15): charts, the report page, drawing, the video encoder choice.
+// Unit tests of viz (issue 15): charts, the report page, drawing (video encoder:
+// test_h264_file.cpp).
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 #include <regex>
 
 #include "support/test_support.hpp"
@@ -10,7 +10,6 @@
 #include "viz/report_html.hpp"
 #include "viz/svg_plot.hpp"
 #include "viz/topview.hpp"
-#include "viz/video_writer.hpp"
 
 namespace dynanav {
 namespace {
@@ -81,22 +80,6 @@ TEST(Annotate, DrawsObjectsAndTheMessage) {
   cv::cvtColor(out, grey, cv::COLOR_BGR2GRAY);
   EXPECT_GT(cv::countNonZero(grey(cv::Rect(150, 100, 80, 40))), 20);  // the object's marker
   EXPECT_GT(cv::countNonZero(grey(cv::Rect(0, 215, 100, 25))), 20);   // the message
-}
-
-TEST(VideoOutput, WritesAPlayableFileWithTheFirstEncoderThatOpens) {
-  const auto dir = test::scratchDir("video");
-  VideoOutput video(dir, "v", 30.0);
-  for (int i = 0; i < 15; ++i)
-    ASSERT_TRUE(video.write(cv::Mat(120, 160, CV_8UC3, cv::Scalar(i * 10, 0, 0))));
-  video.close();
-  ASSERT_FALSE(video.path().empty());
-  std::printf("encoder: fourcc %s -> %s\n", video.fourcc().c_str(),
-              video.path().filename().c_str());
-  cv::VideoCapture read(video.path().string());
-  ASSERT_TRUE(read.isOpened());
-  int frames = 0;
-  for (cv::Mat f; read.read(f);) ++frames;
-  EXPECT_EQ(frames, 15);
 }
 
 TEST(TopView, PathsAreDrawnOverTheGrid) {

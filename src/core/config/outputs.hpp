@@ -3,6 +3,8 @@
 // optional products of a run (issue 15): static map, annotated video, top view, run report.
 // To add a tunable: the member with its default, and one v("key", member, "doc") line in visit().
 
+#include <string>
+
 #include "core/config/range.hpp"
 
 namespace dynanav {
@@ -23,6 +25,9 @@ struct OutputsConfig {
   double walk_min_height_m = 0.3;
   double walk_max_height_m = 1.8;
   double grid_cell_m = 0.05;
+  // x264's fastest preset on the video's own worker thread: OpenCV's defaults (preset medium,
+  // 3 frame threads + lookahead) cost ~20 ms of CPU per 640x480 frame (docs/maps_and_outputs.md).
+  std::string video_encoder_options = "preset=ultrafast,threads=1";
   template <class V>
   void visit(V&& v) {
     v("map", map,
@@ -61,6 +66,9 @@ struct OutputsConfig {
     v("walk_max_height_m", walk_max_height_m, "occupancy grid: highest obstacle height above floor",
       Range{-10, 10});
     v("grid_cell_m", grid_cell_m, "occupancy grid cell size (m)", Range{0, 1, Range::kOpenLow});
+    v("video_encoder_options", video_encoder_options,
+      "annotated.mp4's libx264 options, key=value,... (FFmpeg's names: preset, crf, tune, "
+      "threads, x264-params); an unknown one makes the video fall back to MPEG-4");
   }
 };
 

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "support/test_support.hpp"
 
@@ -13,10 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// `extra`: more run flags (a config file).
+/// `extra`: more run flags (a config file); `extra_b`: flags of the second run only (outputs
+/// that must not change the trajectory); `dir_out`: where the runs are, OUT/a and OUT/b.
 void expectReproducible(const std::string& scenario, const std::string& extra = "",
-                        const std::string& tag = "") {
+                        const std::string& tag = "", const std::string& extra_b = "",
+                        fs::path* dir_out = nullptr) {
   const fs::path dir = test::scratchDir("determinism_" + scenario + tag);
+  if (dir_out) *dir_out = dir;
   const fs::path seq = dir / "seq";
   std::string log;
   ASSERT_EQ(test::runCli("simulate --scenario " + scenario + " --out " + seq.string() +
@@ -24,9 +28,10 @@ void expectReproducible(const std::string& scenario, const std::string& extra = 
                          &log),
             0)
       << log;
-  for (const char* run : {"a", "b"}) {
+  for (const std::string run : {"a", "b"}) {
     ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + (dir / run).string() +
-                               " --segmenter masks --deterministic --quiet" + extra,
+                               " --segmenter masks --deterministic --quiet" + extra +
+                               (run == "b" ? extra_b : ""),
                            &log),
               0)
         << log;
@@ -57,6 +62,18 @@ TEST(Determinism, LateMasksReplayIsBitIdentical) {
   const fs::path config = test::scratchDir("determinism_lag_config") / "lag.yaml";
   std::ofstream(config) << "perception:\n  emulated_lag_frames: 3\n";
   expectReproducible("office", " --config " + config.string(), "_lag3");
+}
+
+TEST(Determinism, TheAnnotatedVideoDoesNotChangeTheTrajectory) {
+  // The video's worker thread only reads the frames and results (issue 15).
+  fs::path dir;
+  expectReproducible("office", "", "_video", " --video", &dir);
+  const fs::path video = dir / "b" / "annotated.mp4";
+  cv::VideoCapture read(video.string());
+  ASSERT_TRUE(read.isOpened()) << video;
+  int frames = 0;
+  for (cv::Mat f; read.read(f);) ++frames;
+  EXPECT_EQ(frames, 90);  // every frame, none dropped
 }
 
 }  // namespace

@@ -1,11 +1,12 @@
 // Clean interruption (issue 16): SIGINT or SIGTERM during `dynanav run` ends it with 130 / 143,
 // and every output written so far is well-formed — stats.json says "interrupted", the
-// trajectory holds whole lines only, keyframes.txt exists.
+// trajectory holds whole lines only, keyframes.txt exists, annotated.mp4 plays (issue 15).
 #include <gtest/gtest.h>
 #include <signal.h>
 
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <opencv2/videoio.hpp>
 #include <sstream>
 
 #include <unistd.h>
@@ -71,6 +72,22 @@ TEST_F(InterruptCli, SigtermDuringADeterministicRunLeavesValidOutputs) {
                                       SIGTERM, std::chrono::milliseconds(2500));
   EXPECT_EQ(code, 143);
   expectWellFormedOutputs(out, 240);
+}
+
+TEST_F(InterruptCli, SigintWithVideoLeavesAPlayableVideoOfEveryFrameRun) {
+  const fs::path out = dir_ / "sigint_video";
+  const int code = test::runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(),
+                                       "--segmenter", "masks", "--realtime", "--video", "--quiet"},
+                                      SIGINT, std::chrono::milliseconds(3500));
+  EXPECT_EQ(code, 130);
+  expectWellFormedOutputs(out, 240);
+  // The mp4's index is written when the video closes; an interrupted run must still close it.
+  cv::VideoCapture read((out / "annotated.mp4").string());
+  ASSERT_TRUE(read.isOpened());
+  int frames = 0;
+  for (cv::Mat f; read.read(f);) ++frames;
+  const auto stats = nlohmann::json::parse(test::readFile(out / "stats.json"));
+  EXPECT_EQ(frames, stats["frames"].get<int>());
 }
 
 }  // namespace
