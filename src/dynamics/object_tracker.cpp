@@ -319,8 +319,12 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
   // Slow: the filtered speed, or this frame's rigid motion of the points — after a stop the
   // points stop at once while the filtered velocity would decay over the filter's memory.
+  // A new track's filtered velocity is its prior (0 +- 1 m/s): that says nothing of slowness (a
+  // walker far down a hall, not yet flagged moving, was held still for its first frames).
   const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
-  const bool slow = isSlow(track.filter.velocity()) || (v_measured && isSlow(*v_measured));
+  const bool filter_known = track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
+  const bool slow =
+      (filter_known && isSlow(track.filter.velocity())) || (v_measured && isSlow(*v_measured));
   track.stationary = verified_static || (track.still >= config_.static_after_frames &&
                                          (slow || track.still >= 3 * config_.static_after_frames));
   if (track.stationary) {
