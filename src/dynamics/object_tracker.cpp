@@ -322,9 +322,8 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // A new track's filtered velocity is its prior (0 +- 1 m/s): that says nothing of slowness (a
   // walker far down a hall, not yet flagged moving, was held still for its first frames).
   const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
-  const bool filter_known = track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
-  const bool slow =
-      (filter_known && isSlow(track.filter.velocity())) || (v_measured && isSlow(*v_measured));
+  const bool slow = (filterVelocityKnown(track) && isSlow(track.filter.velocity())) ||
+                    (v_measured && isSlow(*v_measured));
   track.stationary = verified_static || (track.still >= config_.static_after_frames &&
                                          (slow || track.still >= 3 * config_.static_after_frames));
   if (track.stationary) {
@@ -332,6 +331,10 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.
     track.whole_centre_frames = 0;
   }
+}
+
+bool ObjectTracker::filterVelocityKnown(const Track& track) const {
+  return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
 }
 
 std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
@@ -369,7 +372,7 @@ TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& in
   o.p_world = t.filter.position();
   o.v_world_mps = t.stationary ? Vec3::Zero() : t.filter.velocity();
   // A new track's velocity is its prior (zero, sigma 1 m/s) until measurements narrow it.
-  o.velocity_known = t.stationary || t.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
+  o.velocity_known = t.stationary || filterVelocityKnown(t);
   o.p_camera = input.T_world_camera.inverse() * o.p_world;
   fillViewGeometry(o);
   o.points = int(t.pixels.size());

@@ -68,6 +68,8 @@ class ObjectTracker {
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  /// The filter's velocity has been narrowed from its prior (0 +- 1 m/s) by measurements.
+  [[nodiscard]] bool filterVelocityKnown(const Track& track) const;
   struct Centre {
     Vec3 p_camera;
     std::optional<Mat3> cov_world;  ///< measurement noise (m^2); none: the configured one
