@@ -37,7 +37,9 @@ GroundMotion filterMotion(const TrackedObject& object);
 /// Line fit p = a + b (t - t_now) through (t, p) samples, each weighted by the inverse of its
 /// covariance cov_p[i] (none given: zero) plus noise_m^2 I; false when under 3 samples or a span
 /// under min_span_s. The covariance of the line is scaled up per axis when the residuals exceed
-/// what the weights expect, never down (a perfect line is not certain). With no cov_p it is the
+/// what the weights expect, never down (a perfect line is not certain); that per-axis check uses
+/// the weights' diagonals, exact for axis-aligned covariances and an approximation for rotated
+/// ones (the line itself uses the full weights). With no cov_p it is the
 /// ordinary per-axis least-squares line with its residual variance floored at noise_m^2.
 bool fitLine(const std::vector<double>& t_s, const std::vector<Eigen::Vector2d>& p, double t_now_s,
              double min_span_s, double noise_m, GroundMotion& out,
