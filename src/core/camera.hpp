@@ -24,6 +24,10 @@ struct PinholeCamera {
   /// Rolling-shutter readout time of the colour camera (s): the delay between its first and last
   /// row. 0 = global shutter (or not known). Tracking re-times keypoints with it (slam/rolling_shutter).
   double readout_s = 0.0;
+  /// Exposure time of the colour camera (s); 0 = not known. A corner blurred over the exposure is
+  /// found anywhere along its streak, so its pixel may miss the depth sample it is compared with
+  /// (dynamics/depth_tolerance).
+  double exposure_s = 0.0;
 
   [[nodiscard]] bool isDistorted() const;
   [[nodiscard]] double bf() const { return fx * baseline_m; }

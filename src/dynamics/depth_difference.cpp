@@ -1,5 +1,6 @@
 #include "dynamics/depth_difference.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynanav {
@@ -8,10 +9,22 @@ double depthDifferenceThreshold(double depth_m, const DynamicsConfig& config) {
   return config.depth_diff_min_m + config.depth_diff_per_z2 * depth_m * depth_m;
 }
 
+double mapPointDepthSigma(double depth_m, double scale, double bf_px_m) {
+  if (!(bf_px_m > 0.0)) return 0.0;
+  return depth_m * depth_m * scale / bf_px_m;
+}
+
 bool failsDepthTest(const DepthCheck& check, const DynamicsConfig& config) {
   if (!(check.measured_depth_m > 0.f) || !(check.predicted_depth_m > 0.f)) return false;
-  const double diff = std::abs(double(check.measured_depth_m) - double(check.predicted_depth_m));
-  return diff > depthDifferenceThreshold(check.predicted_depth_m, config);
+  double lo = check.measured_depth_m, hi = check.measured_depth_m;
+  if (check.nearby_min_m > 0.f) {
+    lo = std::min(lo, double(check.nearby_min_m));
+    hi = std::max(hi, double(check.nearby_max_m));
+  }
+  const double predicted = check.predicted_depth_m;
+  const double threshold = depthDifferenceThreshold(predicted, config) +
+                           config.depth_diff_map_sigmas * double(check.predicted_sigma_m);
+  return predicted < lo - threshold || predicted > hi + threshold;
 }
 
 DepthDifferenceResult classifyByDepthDifference(const std::vector<DepthCheck>& checks,

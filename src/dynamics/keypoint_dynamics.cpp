@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dynamics/depth_difference.hpp"
+#include "dynamics/depth_tolerance.hpp"
 
 namespace dynanav {
 
@@ -83,14 +84,29 @@ void labelKeypoints(Features& features, const cv::Mat& labels) {
 }
 
 MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
-                             const DynamicsConfig& config,
+                             const DynamicsConfig& config, const DepthTestMotion& motion,
                              const std::vector<uint16_t>& known_moving) {
   const Features& f = frame.features;
+  const double focal_px = f.camera ? f.camera->fx : 0.0;
   std::vector<DepthCheck> checks(f.keypoints.size());
   for (int i = 0; i < frame.size(); ++i) {
-    checks[i].instance = f.instance_id[i];
-    checks[i].measured_depth_m = f.depth_m[i];
-    checks[i].predicted_depth_m = predicted_depth_m[i];
+    DepthCheck& check = checks[i];
+    check.instance = f.instance_id[i];
+    check.measured_depth_m = f.depth_m[i];
+    check.predicted_depth_m = predicted_depth_m[i];
+    if (!(check.measured_depth_m > 0.f) || !(check.predicted_depth_m > 0.f)) continue;
+    if (f.camera && f.scales) {
+      const int octave = std::clamp(f.keypoints[i].octave, 0, int(f.scales->scale.size()) - 1);
+      check.predicted_sigma_m = static_cast<float>(
+          mapPointDepthSigma(check.predicted_depth_m, f.scales->scale[octave], f.camera->bf()));
+    }
+    const double radius_px = motionDisplacementPx(motion.velocity, check.measured_depth_m, focal_px,
+                                                  motion.time_spread_s);
+    const int radius = std::min(config.depth_test_max_radius_px, int(std::lround(radius_px)));
+    if (radius <= 0 || motion.depth_m.empty()) continue;
+    const DepthRange nearby = depthRangeAround(motion.depth_m, f.keypoints[i].pt, radius);
+    check.nearby_min_m = nearby.min_m;
+    check.nearby_max_m = nearby.max_m;
   }
   const DepthDifferenceResult result = classifyByDepthDifference(checks, config);
   MoverVerdict out;

@@ -15,6 +15,7 @@
 #include "perception/instances.hpp"
 #include "slam/frame.hpp"
 #include "slam/keypoint_drop.hpp"
+#include "slam/rolling_shutter.hpp"
 
 namespace dynanav {
 
@@ -38,15 +39,25 @@ struct MoverVerdict {
   KeypointDrop drop;  ///< what slam is to drop and cull (SlamSystem::applyDrop)
 };
 
+/// What the motion-aware depth test needs besides the frame (depth_tolerance.hpp). Default: a
+/// still camera, each keypoint compared with its own depth only (DynaSLAM's test).
+struct DepthTestMotion {
+  cv::Mat depth_m;             ///< the frame's depth image (CV_32F metres); empty: own depth only
+  CameraVelocity velocity;     ///< the camera's motion since the last frame (interval 0: unknown)
+  double time_spread_s = 0.0;  ///< depthTestTimeSpread() of the frame
+};
+
 /// The depth-difference test on `frame` at its initial pose: `predicted_depth_m` = depth of each
 /// keypoint's matched map point in the camera (0 = none; SlamSystem::predictedDepths), measured =
-/// sensor depth at the keypoint. Dynamic keypoints (own failure, or in an instance voted dynamic)
-/// are to be dropped. Instances in `known_moving` are treated as voted dynamic (a mover stays a
-/// mover for the frames where too few of its points are matched to vote). Map points measured
-/// deeper than predicted are to be culled when config.cull_vanished_points; those of keypoints on
-/// a moving instance when config.cull_moving_object_points. Reads the frame only.
+/// sensor depth at the keypoint, or any depth within the pixels it may be misregistered by while
+/// the camera moves (`motion`; radius capped by config.depth_test_max_radius_px). Dynamic keypoints
+/// (own failure, or in an instance voted dynamic) are to be dropped. Instances in `known_moving`
+/// are treated as voted dynamic (a mover stays a mover for the frames where too few of its points
+/// are matched to vote). Map points measured deeper than predicted are to be culled when
+/// config.cull_vanished_points; those of keypoints on a moving instance when
+/// config.cull_moving_object_points. Reads the frame only.
 MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
-                             const DynamicsConfig& config,
+                             const DynamicsConfig& config, const DepthTestMotion& motion = {},
                              const std::vector<uint16_t>& known_moving = {});
 
 }  // namespace dynanav

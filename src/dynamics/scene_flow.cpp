@@ -1,11 +1,19 @@
 #include "dynamics/scene_flow.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "core/frame.hpp"
 
 namespace dynanav {
+
+double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config) {
+  const double sigma_prev = config.depth_noise_per_z2 * z_prev_m * z_prev_m;
+  const double sigma_cur = config.depth_noise_per_z2 * z_cur_m * z_cur_m;
+  const double noise_m = config.scene_flow_point_sigmas * std::hypot(sigma_prev, sigma_cur);
+  return std::max(config.scene_flow_point_m, noise_m);
+}
 
 SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
                                   const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
@@ -21,7 +29,8 @@ SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
     sum += flow_m;
     sum_vector += flow;
     ++v.points;
-    v.moving += flow_m > config.scene_flow_point_m ? 1 : 0;
+    v.moving +=
+        flow_m > sceneFlowPointThreshold(p_prev_camera[i].z(), p_cur_camera[i].z(), config) ? 1 : 0;
   }
   v.mean_flow_m = v.points ? sum / v.points : 0.0;
   v.decided = v.points >= config.scene_flow_min_points;
@@ -29,8 +38,10 @@ SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
   // Depth noise alone (sigma ~1.5 cm at 3 m on a Kinect) moves many single points past 2 cm but
   // averages out over the object; a real motion does not. So the object's mean displacement
   // must pass the point threshold too (scene_flow_mean_check).
-  const bool mean_moves = !config.scene_flow_mean_check || v.mean_vector_m > config.scene_flow_point_m;
-  v.dynamic = v.decided && mean_moves && double(v.moving) > config.scene_flow_share * double(v.points);
+  const bool mean_moves =
+      !config.scene_flow_mean_check || v.mean_vector_m > config.scene_flow_point_m;
+  v.dynamic =
+      v.decided && mean_moves && double(v.moving) > config.scene_flow_share * double(v.points);
   return v;
 }
 
@@ -76,7 +87,8 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
   }
 }
 
-uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels, const cv::Mat& flow) {
+uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels,
+                        const cv::Mat& flow) {
   CV_Assert(labels.type() == CV_16UC1 && (flow.empty() || flow.type() == CV_32FC2));
   std::map<uint16_t, int> counts;
   int total = 0;

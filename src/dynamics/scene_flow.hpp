@@ -2,7 +2,8 @@
 // Prior-dynamic objects (people) confirmed by 3D scene flow (Ou et al. 2022, §3.2): sample points
 // inside the object's mask, follow them to the next frame with optical flow, lift both ends with
 // depth, remove the camera's own motion, and call a point moving if it moved more than
-// scene_flow_point_m (0.02 m); the object is dynamic when more than scene_flow_share (30 %) of its
+// scene_flow_point_m (0.02 m; more where depth noise is larger: sceneFlowPointThreshold); the
+// object is dynamic when more than scene_flow_share (30 %) of its
 // points move. A sitting person is then static: their points may help tracking but never become
 // map points.
 #include <opencv2/core.hpp>
@@ -15,13 +16,19 @@
 namespace dynanav {
 
 struct SceneFlowVerdict {
-  int points = 0;         ///< points with valid depth at both ends
-  int moving = 0;         ///< of them, moving more than the threshold
-  double mean_flow_m = 0; ///< mean 3D displacement length after ego-motion compensation
-  double mean_vector_m = 0; ///< length of the mean 3D displacement vector (noise cancels)
-  bool decided = false;   ///< enough points for a verdict
+  int points = 0;            ///< points with valid depth at both ends
+  int moving = 0;            ///< of them, moving more than the threshold
+  double mean_flow_m = 0;    ///< mean 3D displacement length after ego-motion compensation
+  double mean_vector_m = 0;  ///< length of the mean 3D displacement vector (noise cancels)
+  bool decided = false;      ///< enough points for a verdict
   bool dynamic = false;
 };
+
+/// Displacement (m) above which one point counts as moving: scene_flow_point_m, or
+/// scene_flow_point_sigmas sigmas of the depth noise at its two ends (depth_noise_per_z2 · z²)
+/// where that is larger (at 3 m: 3 × 2.0 cm = 6.1 cm with the defaults), so depth noise alone does
+/// not make far points move.
+double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config);
 
 /// Verdict from corresponding 3D points of one object in the previous and current camera frames.
 /// T_cur_prev maps previous-camera coordinates into the current camera (the ego-motion).
@@ -47,6 +54,7 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
 /// small, fast objects: a walker 4 m away crossing the view moves half its width in 3 frames,
 /// so its old mask barely overlaps its new one. An empty `flow` looks the pixels up where they
 /// were (the instance now covering the old mask).
-uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels, const cv::Mat& flow);
+uint16_t labelAlongFlow(const cv::Mat& labels, const std::vector<cv::Point>& old_pixels,
+                        const cv::Mat& flow);
 
 }  // namespace dynanav

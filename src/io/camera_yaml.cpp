@@ -34,6 +34,7 @@ constexpr CameraKey kCameraKeys[] = {
     {"depth_factor", false, 1e-3, 1e6},
     {"baseline_m", false, 1e-3, 10},
     {"rolling_shutter_readout_ms", false, 0, 1000},
+    {"exposure_ms", false, 0, 1000},
 };
 
 std::string rangeText(const CameraKey& k) {
@@ -117,6 +118,7 @@ PinholeCamera loadCameraYaml(const std::filesystem::path& path) {
   if (values.count("baseline_m")) camera.baseline_m = values["baseline_m"][0];
   if (values.count("rolling_shutter_readout_ms"))
     camera.readout_s = values["rolling_shutter_readout_ms"][0] * 1e-3;
+  if (values.count("exposure_ms")) camera.exposure_s = values["exposure_ms"][0] * 1e-3;
   return camera;
 }
 
@@ -134,6 +136,8 @@ void saveCameraYaml(const std::filesystem::path& path, const PinholeCamera& came
   e << YAML::Key << "depth_factor" << YAML::Value << camera.depth_factor;
   e << YAML::Key << "baseline_m" << YAML::Value << camera.baseline_m;
   e << YAML::Key << "rolling_shutter_readout_ms" << YAML::Value << camera.readout_s * 1e3;
+  if (camera.exposure_s > 0.0)
+    e << YAML::Key << "exposure_ms" << YAML::Value << camera.exposure_s * 1e3;
   e << YAML::EndMap;
   std::ofstream out(path);
   if (!out) throw InputError(path.string(), "cannot write camera file");

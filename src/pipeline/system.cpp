@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "assist/feedback_stage.hpp"
+#include "dynamics/depth_tolerance.hpp"
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_tracker.hpp"
 #include "dynamics/prior_verifier.hpp"
@@ -63,8 +64,8 @@ FrameResult System::process(const RgbdFrame& input) {
   TrackOutcome outcome;
   {
     ScopedTimer timer(timers_, "tracking");
-    InitialPose initial = slam_->initialPose(frame);            // 4. initial pose
-    if (initial.ok) rejectMovers(frame, *result.dynamics);      // 5. non-prior movers dropped
+    InitialPose initial = slam_->initialPose(frame);                        // 4. initial pose
+    if (initial.ok) rejectMovers(input, initial, frame, *result.dynamics);  // 5. movers dropped
     outcome = slam_->trackLocalMap(frame, std::move(initial));  // 6. local map, static points
   }
   verifyPriors(prep, input, frame, outcome, result);  // 7. scene flow: moving or not
@@ -111,11 +112,17 @@ Frame System::extractFeatures(const PreparedFrame& prep, const RgbdFrame& input,
   return frame;
 }
 
-void System::rejectMovers(Frame& frame, FrameDynamics& record) {
+void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Frame& frame,
+                          FrameDynamics& record) {
   depth_voted_.clear();
   if (!dynamic_) return;
+  // The depth test looks as far as the camera's motion may have misregistered a keypoint.
+  const double exposure_s =
+      camera_.exposure_s > 0.0 ? camera_.exposure_s : config_.dynamics.assumed_exposure_ms * 1e-3;
+  const DepthTestMotion motion{input.depth_m, initial.motion_since_last,
+                               depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s)};
   const MoverVerdict verdict =
-      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics);
+      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics, motion);
   record.culled_points += slam_->applyDrop(frame, verdict.drop);
   record.dynamic_keypoints += static_cast<int>(verdict.drop.drop.size());
   record.moving_instances += static_cast<int>(verdict.moving_instances.size());

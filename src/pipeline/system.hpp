@@ -27,6 +27,7 @@ class FeedbackStage;
 struct Frame;
 struct LoopEvent;
 struct TrackOutcome;
+struct InitialPose;
 
 class System {
  public:
@@ -52,7 +53,8 @@ class System {
   cv::Mat extractionMask(const RgbdFrame& input, FrameResult& result);
   Frame extractFeatures(const PreparedFrame& prep, const RgbdFrame& input, const cv::Mat& allowed,
                         const Instances& instances);
-  void rejectMovers(Frame& frame, FrameDynamics& record);
+  void rejectMovers(const RgbdFrame& input, const InitialPose& initial, Frame& frame,
+                    FrameDynamics& record);
   void verifyPriors(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
                     const TrackOutcome& outcome, FrameResult& result);
   void trackObjects(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,

@@ -141,6 +141,9 @@ InitialPose Tracker::initialPose(Frame& frame) {
                 std::count_if(frame.map_points.begin(), frame.map_points.end(),
                               [](const auto& p) { return p != nullptr; }));
   initial.ok = ok;
+  if (ok && !initial.was_lost && frame.stamp_s > last_.stamp_s)
+    initial.motion_since_last = CameraVelocity::of(
+        frame.T_camera_world * last_.T_camera_world.inverse(), frame.stamp_s - last_.stamp_s);
   return initial;
 }
 

@@ -33,6 +33,9 @@ struct InitialPose {
   bool retime = false;  ///< keypoints were re-timed for the rolling shutter with the prediction
   double readout_s = 0.0;
   KeypointMeasurements as_read;  ///< the keypoints before re-timing (to re-time with own motion)
+  /// The camera's motion from the last frame to this initial pose (interval 0: not known, e.g.
+  /// after a loss); dynamics widens its depth test with it.
+  CameraVelocity motion_since_last;
   TrackOutcome outcome;          ///< the result when `finished`
 };
 

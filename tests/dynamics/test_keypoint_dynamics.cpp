@@ -158,3 +158,35 @@ TEST(KeypointDynamics, PoseIsUsedForPrediction) {
   frame.T_camera_world = SE3::Identity();
   EXPECT_EQ(rejectDepthMovers(frame, c).rejected, 1);
 }
+
+TEST(KeypointDynamics, TurningCameraWidensTheDepthTestOnlyAsFarAsItMoved) {
+  // A depth edge at column 80: a cupboard at 1.5 m on the left, the wall at 4 m on the right.
+  // A mover stands 1 m in front of the wall at columns 120-159 (rows 20-99).
+  cv::Mat depth(120, 160, CV_32F, cv::Scalar(4.0f));
+  depth.colRange(0, 80).setTo(1.5f);
+  depth(cv::Rect(120, 20, 40, 80)).setTo(3.0f);
+  // Keypoint 0: the cupboard's corner (map point at 1.5 m), found 3 px onto the wall in a
+  // blurred image. Keypoint 1: on the mover, 20 px from its outline, where the map had the wall.
+  Frame frame = frameWith({{83, 60}, {140, 60}}, {1.5f, 4.0f}, {4.0f, 3.0f});
+  frame.features.camera = std::make_shared<PinholeCamera>();  // f = 525 px
+  DynamicsConfig c;
+  DepthTestMotion motion;
+  motion.depth_m = depth;
+  motion.time_spread_s = 0.005;  // half a 10 ms exposure
+  const std::vector<float> predicted = predictedMapPointDepths(frame);
+
+  // Still camera: DynaSLAM's test on the keypoint's own depth flags the corner.
+  const MoverVerdict still = findDepthMovers(frame, predicted, c, motion);
+  EXPECT_EQ(still.drop.drop, (std::vector<int>{0, 1}));
+
+  // Turning at 150 deg/s: the scene moved ~7 px within the time spread, the cupboard's depth
+  // lies within that radius, so the corner is kept; the mover is still dropped.
+  motion.velocity.interval_s = 1.0 / 30.0;
+  motion.velocity.omega = Vec3(0, 150.0 * 3.14159265 / 180.0 / 30.0, 0);
+  const MoverVerdict turning = findDepthMovers(frame, predicted, c, motion);
+  EXPECT_EQ(turning.drop.drop, (std::vector<int>{1}));
+
+  // The search radius is capped: with a cap of 2 px the corner is flagged again.
+  c.depth_test_max_radius_px = 2;
+  EXPECT_EQ(findDepthMovers(frame, predicted, c, motion).drop.drop, (std::vector<int>{0, 1}));
+}

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "dynamics/scene_flow.hpp"
@@ -19,10 +20,12 @@ TEST(SceneFlow, EgoMotionAloneIsStatic) {
   std::mt19937 rng(3);
   DynamicsConfig c;
   const auto p_prev = blob(200, Vec3(0.2, 0, 2.5), rng);
-  const SE3 T_cur_prev = makeSE3(Quat(Eigen::AngleAxisd(0.03, Vec3::UnitY())), Vec3(0.02, 0, -0.04));
+  const SE3 T_cur_prev =
+      makeSE3(Quat(Eigen::AngleAxisd(0.03, Vec3::UnitY())), Vec3(0.02, 0, -0.04));
   std::normal_distribution<double> noise(0.0, 0.004);
   std::vector<Vec3> p_cur;
-  for (const auto& p : p_prev) p_cur.push_back(T_cur_prev * p + Vec3(noise(rng), noise(rng), noise(rng)));
+  for (const auto& p : p_prev)
+    p_cur.push_back(T_cur_prev * p + Vec3(noise(rng), noise(rng), noise(rng)));
   const auto v = sceneFlowVerdict(p_prev, p_cur, T_cur_prev, c);
   EXPECT_TRUE(v.decided);
   EXPECT_FALSE(v.dynamic);
@@ -34,7 +37,8 @@ TEST(SceneFlow, WalkingPersonIsDynamic) {
   DynamicsConfig c;
   const auto p_prev = blob(200, Vec3(-0.3, 0, 3.0), rng);
   const SE3 T_cur_prev = makeSE3(Quat(Eigen::AngleAxisd(0.01, Vec3::UnitY())), Vec3(0, 0, -0.03));
-  const Vec3 walk(1.2 / 30.0, 0, 0);  // 1.2 m/s at 30 frames/s = 0.04 m per frame
+  // 1.2 m/s over the verifier's gap (3 frames at 30 frames/s): 0.12 m.
+  const Vec3 walk(1.2 * c.scene_flow_gap_frames / 30.0, 0, 0);
   std::vector<Vec3> p_cur;
   for (size_t i = 0; i < p_prev.size(); ++i) {
     // Arms and legs swing: only 60 % of the body moves by the full step in this frame.
@@ -101,3 +105,37 @@ TEST(SceneFlow, LabelFollowsTheFlowNotTheOldMask) {
 }
 
 }  // namespace
+
+TEST(SceneFlow, PointThresholdGrowsWithDepthNoise) {
+  DynamicsConfig c;
+  EXPECT_DOUBLE_EQ(sceneFlowPointThreshold(1.0, 1.0, c), c.scene_flow_point_m);  // near: fixed
+  // 4 m: sigma 0.0016 * 16 = 2.56 cm per end, 3 * sqrt(2) * 2.56 cm = 10.9 cm.
+  EXPECT_NEAR(sceneFlowPointThreshold(4.0, 4.0, c), 3.0 * std::sqrt(2.0) * 0.0256, 1e-9);
+  c.scene_flow_point_sigmas = 0;
+  EXPECT_DOUBLE_EQ(sceneFlowPointThreshold(4.0, 4.0, c), c.scene_flow_point_m);
+}
+
+TEST(SceneFlow, FarStaticObjectWithEgoMotionErrorStaysStaticWalkerStillMoves) {
+  // A chair 4 m away; the pose error leaves 2.5 cm of apparent motion and the sensor adds its
+  // z^2 noise along each ray: with a fixed 2 cm point threshold over half its points "move".
+  std::mt19937 rng(5);
+  DynamicsConfig c;
+  const auto p_prev = blob(200, Vec3(0.5, 0, 4.0), rng);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  auto noisy = [&](const Vec3& p) {
+    const double sigma = c.depth_noise_per_z2 * p.z() * p.z();
+    return Vec3(p * (1.0 + sigma * unit(rng) / p.norm()));  // noise along the viewing ray
+  };
+  const Vec3 pose_error(0.025, 0, 0);
+  std::vector<Vec3> chair_prev, chair_cur, walker_cur;
+  for (const auto& p : p_prev) {
+    chair_prev.push_back(noisy(p));
+    chair_cur.push_back(noisy(p) + pose_error);
+    walker_cur.push_back(noisy(p) + pose_error + Vec3(0.12, 0, 0));  // 1.2 m/s over 3 frames
+  }
+  DynamicsConfig fixed = c;
+  fixed.scene_flow_point_sigmas = 0;
+  EXPECT_TRUE(sceneFlowVerdict(chair_prev, chair_cur, SE3::Identity(), fixed).dynamic);
+  EXPECT_FALSE(sceneFlowVerdict(chair_prev, chair_cur, SE3::Identity(), c).dynamic);
+  EXPECT_TRUE(sceneFlowVerdict(chair_prev, walker_cur, SE3::Identity(), c).dynamic);
+}

@@ -16,6 +16,11 @@ struct DynamicsConfig {
   double prior_box_depth_band_m = 0.4;
   double depth_diff_min_m = 0.10;
   double depth_diff_per_z2 = 0.02;
+  double depth_diff_map_sigmas = 1.0;
+  double depth_noise_per_z2 = 0.0016;
+  double scene_flow_point_sigmas = 3.0;
+  double assumed_exposure_ms = 20.0;
+  int depth_test_max_radius_px = 24;
   double instance_dynamic_share = 0.30;
   int instance_min_points = 5;
   double scene_flow_point_m = 0.02;
@@ -45,6 +50,29 @@ struct DynamicsConfig {
       "depth-difference test: extra threshold per m^2 of depth (structured-light noise grows with "
       "z^2)",
       Range{0, 100});
+    v("depth_diff_map_sigmas", depth_diff_map_sigmas,
+      "depth-difference test: the threshold also grows by this many sigmas of the map point's "
+      "depth under the SLAM's own RGB-D model (z^2 * pyramid scale of the keypoint / (fx * "
+      "baseline)): a far or coarse point's depth is placed by bundle adjustment with little depth "
+      "information, so its predicted depth is no measurement (0 = DynaSLAM's fixed threshold)",
+      Range{0, 100});
+    v("depth_noise_per_z2", depth_noise_per_z2,
+      "depth sensor noise sigma (m) per m^2 of depth (structured light: ~1.6 mm at 1 m, 4 cm at "
+      "5 m, Khoshelham & Elberink 2012); scales the scene-flow point threshold",
+      Range{0, 1});
+    v("scene_flow_point_sigmas", scene_flow_point_sigmas,
+      "scene flow: a point moves only if it moved more than this many sigmas of its depth noise "
+      "at both ends (and more than scene_flow_point_m); 0 = the fixed threshold only",
+      Range{0, 100});
+    v("assumed_exposure_ms", assumed_exposure_ms,
+      "colour exposure (ms) assumed when camera.yaml gives no exposure_ms: while the camera "
+      "moves, the depth test accepts any depth within the pixels a keypoint may have moved over "
+      "half the exposure plus the colour-depth stamp offset (motion blur, misregistration)",
+      Range{0, 1000});
+    v("depth_test_max_radius_px", depth_test_max_radius_px,
+      "largest search radius (px) of the motion-aware depth test (0 = compare the keypoint's own "
+      "depth only, as DynaSLAM)",
+      Range{0, 200});
     v("instance_dynamic_share", instance_dynamic_share,
       "an instance moves when this share of its checked keypoints fails the depth test",
       Range{0, 1});
