@@ -63,6 +63,27 @@ std::optional<PersonExtent> personExtent(const cv::Mat& labels, const Instance& 
   return extent;
 }
 
+double nearerOutlineShare(const cv::Mat& labels, const cv::Mat& depth_m, uint16_t id,
+                          const cv::Rect& box, double nearer_than_m) {
+  const cv::Rect area =
+      (box + cv::Size(2, 2) - cv::Point(1, 1)) & cv::Rect(0, 0, labels.cols, labels.rows);
+  const auto inMask = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < labels.cols && y < labels.rows &&
+           labels.at<uint16_t>(y, x) == id;
+  };
+  int outline = 0, nearer = 0;
+  for (int y = area.y; y < area.y + area.height; ++y)
+    for (int x = area.x; x < area.x + area.width; ++x) {
+      if (inMask(x, y)) continue;
+      if (!inMask(x - 1, y) && !inMask(x + 1, y) && !inMask(x, y - 1) && !inMask(x, y + 1))
+        continue;
+      ++outline;
+      const float z = depth_m.at<float>(y, x);
+      if (std::isfinite(z) && z > 0.f && z < nearer_than_m) ++nearer;
+    }
+  return outline > 0 ? double(nearer) / outline : 0.0;
+}
+
 std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const PinholeCamera& camera,
                                            const Vec3& up_camera,
                                            const HeightRangeOptions& options) {

@@ -52,6 +52,14 @@ inline constexpr double kTorsoCentreBelowTop = 0.35;
 std::optional<PersonExtent> personExtent(const cv::Mat& labels, const Instance& instance,
                                          int edge_margin_px = 1);
 
+/// Share of the pixels just outside the mask of instance `id` (4-neighbours of its pixels, inside
+/// the image) whose depth is valid and nearer than `nearer_than_m` (camera z): where something
+/// nearer than the person borders its silhouette, it may hide part of it (a cabinet in front of
+/// a walker's side, a desk in front of its legs), and the silhouette's height is not the
+/// person's. A free silhouette borders only what is behind it or beyond the sensor's range.
+double nearerOutlineShare(const cv::Mat& labels, const cv::Mat& depth_m, uint16_t id,
+                          const cv::Rect& box, double nearer_than_m);
+
 struct HeightRangeOptions {
   StaturePrior stature;
   /// Standard deviation (px) of each end of the mask: a segmenter's boundary is uncertain by a
