@@ -84,6 +84,13 @@ double nearerOutlineShare(const cv::Mat& labels, const cv::Mat& depth_m, uint16_
   return outline > 0 ? double(nearer) / outline : 0.0;
 }
 
+Eigen::Matrix<double, 6, 6> statureCovariance(const Vec3& p_world, const Vec3& v_world_mps,
+                                              const Vec3& camera_world, double scale_sigma) {
+  Eigen::Matrix<double, 6, 1> J;
+  J << p_world - camera_world, v_world_mps;
+  return scale_sigma * scale_sigma * J * J.transpose();
+}
+
 std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const PinholeCamera& camera,
                                            const Vec3& up_camera,
                                            const HeightRangeOptions& options) {

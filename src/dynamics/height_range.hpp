@@ -99,4 +99,11 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
                                            const Vec3& up_camera,
                                            const HeightRangeOptions& options = {});
 
+/// Covariance (world, [p, v]) that a common scale error of relative sigma `scale_sigma` gives a
+/// track every centre of which came from the height range: a stature off the prior by ε scales
+/// all of them about the camera centre, the position by −ε·(p − c) and the velocity by −ε·v (the
+/// wearer's own velocity neglected: ε is ~5 %).
+Eigen::Matrix<double, 6, 6> statureCovariance(const Vec3& p_world, const Vec3& v_world_mps,
+                                              const Vec3& camera_world, double scale_sigma);
+
 }  // namespace dynanav

@@ -1,5 +1,6 @@
 #include "dynamics/object_tracker.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -35,20 +36,14 @@ constexpr double kPersonHeightM = 1.7;
 /// image's side: sideways; a person without the trunk in view: the height): a body's size.
 constexpr double kUnmeasuredSigmaM = 1.0;
 
-/// Covariance (world, [p, v]) of a filter state whose every centre came from the height range:
-/// a stature off the prior by ε scales all of them about the camera centre, the position by
-/// −ε·(p − c) and the velocity by −ε·v (the wearer's own velocity neglected: ε is ~5 %).
-KalmanCv::Mat6 statureCovariance(const Vec3& p_world, const Vec3& v_world, const Vec3& camera_world,
-                                 double scale_sigma) {
-  Eigen::Matrix<double, 6, 1> J;
-  J << p_world - camera_world, v_world;
-  return scale_sigma * scale_sigma * J * J.transpose();
-}
-
 /// A silhouette bordered over more than this share of its outline by something nearer than the
 /// person is taken as partly hidden (height_range.hpp, nearerOutlineShare): a free one borders
 /// nothing nearer; one hidden along a side or below, tens of percent.
 constexpr double kMaxNearerOutlineShare = 0.05;
+
+/// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
+/// innovation beyond it is not what the filter's covariance allows.
+constexpr double kChiSquare3Dof999 = 16.27;
 
 /// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both).
 int cutSide(const Instance& instance, int image_cols) {
@@ -364,6 +359,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
     std::optional<Mat3> cov_world = centre->cov_world;
+    bool restarted = false;  // the filter starts afresh at this centre
     if (centre->scale_sigma > 0.0 && track.ranged_scale_sigma <= 0.0) {
       // Depth placed this person before (the filter is metric) and now it is beyond the range:
       // the stature's error is new to the filter. It enters every frame as if independent
@@ -378,8 +374,23 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.filter.addCovariance(statureCovariance(track.filter.position(), track.filter.velocity(),
                                                    camera_world, track.ranged_scale_sigma));
       track.ranged_scale_sigma = 0.0;
+      // Unless the depth says the ranges were wrong in more than scale: a mask that lost the head
+      // and feet (eroded, or a segmenter at its limit) is not a whole person; 27 px of torso
+      // read 35 m for a walker at 11 m, and the ranges "approached" at 6 m/s. Then what the
+      // filter learnt from them is dropped: it starts afresh at the depth centre.
+      const Mat3 S = track.filter.covariance().topLeftCorner<3, 3>() +
+                     cov_world.value_or(Mat3::Identity() * config_.position_sigma_m *
+                                        config_.position_sigma_m);
+      const Vec3 innovation = p_world - track.filter.position();
+      if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
+        track.filter = KalmanCv(
+            p_world,
+            {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0},
+            cov_world);
+        restarted = true;
+      }
     }
-    track.filter.update(p_world, use_motion ? v_measured : std::nullopt, cov_world);
+    if (!restarted) track.filter.update(p_world, use_motion ? v_measured : std::nullopt, cov_world);
   } else {
     track.whole_centre_frames = 0;
   }

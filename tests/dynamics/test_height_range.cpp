@@ -269,3 +269,37 @@ TEST(ObjectTracker, ASilhouetteBorderedByANearerObjectGetsNoRange) {
     for (int k = 0; k < 3; ++k) EXPECT_GT(std::sqrt(out[0].covariance(k, k)), 0.5) << k;
   }
 }
+
+TEST(ObjectTracker, DepthThatContradictsTheHeightRangeRestartsTheFilter) {
+  // A mask that lost head and legs (the torso only, 35 % of the person's height: eroded, or a
+  // segmenter at its limit) reads the walker ~3 times too far, and its ranges "approach" ~3 times
+  // too fast. When depth reaches the walker (6 m) its centre lies far outside what the ranges'
+  // covariance allows: the filter starts afresh there instead of keeping that velocity.
+  const PinholeCamera c = camera();
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  const cv::Mat no_flow;
+  const double speed_mps = 1.2, z0_m = 9.0, depth_range_m = 6.0;
+  double fastest_after_mps = 0.0;
+  bool ranged = false;
+  for (int i = 0; i < 110; ++i) {
+    const double z_m = z0_m - speed_mps * i / 30.0;
+    const Vec3 shoulders(0.2, -0.1, z_m), hips(0.2, 0.5, z_m);
+    const int top = int(std::lround(c.project(shoulders).y()));
+    const int bottom = int(std::lround(c.project(hips).y()));
+    const int half_width = int(std::lround(0.2 * c.fx / z_m));
+    const int centre = int(std::lround(c.project(hips).x()));
+    const Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+    cv::Mat depth(kH, kW, CV_32F, cv::Scalar(0.f));
+    const bool in_range = z_m - 0.15 < depth_range_m;
+    if (in_range) depth.setTo(float(z_m - 0.15), instances.labels == 1);
+    FrameDynamics dynamics;
+    dynamics.moving_ids.push_back(1);
+    const auto out =
+        tracker.track({i, i / 30.0, instances, dynamics, no_flow, depth, SE3::Identity(), true, c});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (!in_range && out[0].p_camera.z() > 2.0 * z_m) ranged = true;
+    if (in_range) fastest_after_mps = std::max(fastest_after_mps, out[0].speed_mps);
+  }
+  EXPECT_TRUE(ranged);  // the torso did read far too far
+  EXPECT_LT(fastest_after_mps, speed_mps + 0.4);
+}
