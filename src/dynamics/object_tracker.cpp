@@ -41,6 +41,9 @@ constexpr double kUnmeasuredSigmaM = 1.0;
 /// nothing nearer; one hidden along a side or below, tens of percent.
 constexpr double kMaxNearerOutlineShare = 0.05;
 
+/// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
+constexpr double kInitialVelocitySigmaMps = 1.0;
+
 /// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
 /// innovation beyond it is not what the filter's covariance allows.
 constexpr double kChiSquare3Dof999 = 16.27;
@@ -177,10 +180,9 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
 std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
     const Track& track, const std::vector<Vec3>& p_camera, const Instance* instance,
     const ObjectTrackerInput& input) const {
-  // Most of a person's mask without usable depth (beyond the sensor's range): when head and feet
-  // are both in view, the mask's pixel height and a prior on stature give the range, with a
-  // covariance as long along the viewing ray as the stature's spread makes it (height_range.hpp).
-  // Depth takes over as soon as it covers the mask.
+  // Most of a person's mask without usable depth (beyond the sensor's range), head and feet in
+  // view: its pixel height and a stature prior give the range (height_range.hpp) until depth
+  // covers the mask.
   const bool little_depth = instance && track.depth_share < config_.min_depth_share;
   if (little_depth && track.class_name == "person")
     if (const auto extent = personExtent(input.instances.labels, *instance)) {
@@ -188,10 +190,8 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
       // Up: the first camera's (the world frame's) -y, seen from this camera.
       const Vec3 up_camera = R_world_camera.transpose() * Vec3(0.0, -1.0, 0.0);
       const auto range = rangeFromHeight(*extent, input.camera, up_camera);
-      // The person cannot be nearer than its range allows (two sigma): depth that the mask has,
-      // or something bordering its outline, nearer than that says the silhouette is not a whole
-      // person (a walker's arm showing beside a cabinet in front of it: 85 px of it read 10 m
-      // for a person at 3.9 m in the simulated crossing).
+      // Depth of the mask, or of what borders it, nearer than the range allows (2 sigma): not a
+      // whole person (an arm beside a cabinet in the simulated crossing read 10 m at 3.9 m).
       const double nearest_z_m = range ? range->p_camera.z() - 2.0 * range->sigma_range_m : 0.0;
       const double z_mask_m =
           medianMaskDepth(*instance, input.instances.labels, input.depth_m, sample_step_px_);
@@ -370,23 +370,28 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
                track.ranged_scale_sigma > 0.0) {
       // Depth places a person the height range placed so far: the stature's common error enters
       // the filter now, with the position-velocity correlation of a scale, so this update
-      // corrects the velocity the ranges measured in the prior's units as well as the position.
-      track.filter.addCovariance(statureCovariance(track.filter.position(), track.filter.velocity(),
-                                                   camera_world, track.ranged_scale_sigma));
+      // corrects the position (and the velocity, in the prior's units) the ranges measured.
+      // The ranges' velocity also rests on the mask's ends being unbiased from frame to frame,
+      // which a segmenter does not promise for a far person (a mask short by 5 px at each end
+      // reads 12 % far at 11 m, 6 % at 5 m: it approaches too fast): it stays only as a guess as
+      // wide as a new track's prior (docs/tracking.md step 6).
+      KalmanCv::Mat6 Q = statureCovariance(track.filter.position(), track.filter.velocity(),
+                                           camera_world, track.ranged_scale_sigma);
+      Q.bottomRightCorner<3, 3>() +=
+          Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
+      track.filter.addCovariance(Q);
       track.ranged_scale_sigma = 0.0;
-      // Unless the depth says the ranges were wrong in more than scale: a mask that lost the head
-      // and feet (eroded, or a segmenter at its limit) is not a whole person; 27 px of torso
-      // read 35 m for a walker at 11 m, and the ranges "approached" at 6 m/s. Then what the
-      // filter learnt from them is dropped: it starts afresh at the depth centre.
+      // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
+      // feet: 27 px of torso read 35 m at 11 m): then the filter starts afresh at the depth.
       const Mat3 S = track.filter.covariance().topLeftCorner<3, 3>() +
                      cov_world.value_or(Mat3::Identity() * config_.position_sigma_m *
                                         config_.position_sigma_m);
       const Vec3 innovation = p_world - track.filter.position();
       if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
-        track.filter = KalmanCv(
-            p_world,
-            {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0},
-            cov_world);
+        track.filter = KalmanCv(p_world,
+                                {config_.accel_sigma_mps2, config_.position_sigma_m,
+                                 config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
+                                cov_world);
         restarted = true;
       }
     }
@@ -448,10 +453,10 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
   const auto centre = measureCentre(t, p_camera, &instance, input);
   if (!centre) return std::nullopt;
-  t.filter = KalmanCv(
-      input.T_world_camera * centre->p_camera,
-      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0},
-      centre->cov_world);
+  t.filter = KalmanCv(input.T_world_camera * centre->p_camera,
+                      {config_.accel_sigma_mps2, config_.position_sigma_m,
+                       config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
+                      centre->cov_world);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
   // Placed by its height: no verdict to go by (update's static rule for such tracks).
