@@ -382,7 +382,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.filter.addCovariance(Q);
       track.ranged_scale_sigma = 0.0;
       // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
-      // feet: 27 px of torso read 35 m at 11 m): then the filter starts afresh at the depth.
+      // feet: eroded 5 px, one read 35 m at 11 m): then the filter starts afresh at the depth.
       const Mat3 S = track.filter.covariance().topLeftCorner<3, 3>() +
                      cov_world.value_or(Mat3::Identity() * config_.position_sigma_m *
                                         config_.position_sigma_m);
