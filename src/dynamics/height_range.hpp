@@ -17,11 +17,11 @@
 namespace dynanav {
 
 /// Stature of an adult of either sex (m). Mean and spread of a pooled adult population: adult
-/// men average about 1.75-1.80 m and women 1.62-1.66 m in the USA and Europe (e.g. the CDC's
+/// men average about 1.75-1.80 m and women 1.61-1.66 m in the USA and Europe (e.g. the CDC's
 /// NHANES 2015-2018 anthropometric reference data, Fryar et al. 2021: 1.75 / 1.61 m; within each
-/// sex the standard deviation is about 0.07 m); pooling both sexes gives a mean near 1.70 m and a
-/// spread of 0.09-0.10 m. Rounded, not fitted to any sequence; a walking person's silhouette is a
-/// few centimetres lower than the standing stature, which is well inside the spread.
+/// sex the standard deviation is about 0.07 m); pooling both sexes gives a mean of 1.68-1.72 m
+/// and a spread of 0.09-0.10 m. Rounded, not fitted to any sequence; a walking person's silhouette
+/// is a few centimetres lower than the standing stature, which is well inside the spread.
 struct StaturePrior {
   double mean_m = 1.70;
   double sigma_m = 0.09;
