@@ -36,6 +36,9 @@ class KalmanCv {
   /// replaces the configured isotropic noise of this one position measurement.
   void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
               const std::optional<Mat3>& position_cov_world = std::nullopt);
+  /// Adds Q to the state's covariance: uncertainty the measurements so far shared and the filter
+  /// was not told of (the stature behind every height range of one person, object_tracker.cpp).
+  void addCovariance(const Mat6& Q) { P_ += 0.5 * (Q + Q.transpose()); }
   /// Sets the velocity to zero with a small variance (a static object).
   void holdStill();
 

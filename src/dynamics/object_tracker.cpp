@@ -1,9 +1,11 @@
 #include "dynamics/object_tracker.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
+#include "dynamics/height_range.hpp"
 #include "dynamics/object_motion.hpp"
 #include "dynamics/object_points.hpp"
 
@@ -33,6 +35,18 @@ constexpr double kPersonHeightM = 1.7;
 /// Noise (m) of a centre component the visible part does not measure (an object cut by the
 /// image's side: sideways; a person without the trunk in view: the height): a body's size.
 constexpr double kUnmeasuredSigmaM = 1.0;
+
+/// A silhouette bordered over more than this share of its outline by something nearer than the
+/// person is taken as partly hidden (height_range.hpp, nearerOutlineShare): a free one borders
+/// nothing nearer; one hidden along a side or below, tens of percent.
+constexpr double kMaxNearerOutlineShare = 0.05;
+
+/// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
+constexpr double kInitialVelocitySigmaMps = 1.0;
+
+/// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
+/// innovation beyond it is not what the filter's covariance allows.
+constexpr double kChiSquare3Dof999 = 16.27;
 
 /// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both).
 int cutSide(const Instance& instance, int image_cols) {
@@ -73,6 +87,8 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
       carried[k].p_prev_world.push_back(t.p_world[i]);
       carried[k].pixels.emplace_back(px.x, px.y);
     }
+    for (cv::Point2f px : t.voters)
+      if (carryByFlow(input.flow_half, size, px)) carried[k].voters.emplace_back(px.x, px.y);
   }
   // 2. Which instance each track is now; 3. motion, centre and filter per track.
   const std::vector<int> match = associate(input, carried);
@@ -85,7 +101,8 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
   }
   // 4. Tracks unseen for too long, or whose points all left, end.
   std::erase_if(tracks_, [&](const Track& t) {
-    return t.missed > config_.max_missed_frames || (t.missed > 0 && t.pixels.size() < 4);
+    return t.missed > config_.max_missed_frames ||
+           (t.missed > 0 && t.pixels.size() + t.voters.size() < 4);
   });
   // 5. Instances no track claimed start new tracks (fresh ids, never reused).
   for (size_t m = 0; m < items.size(); ++m)
@@ -131,11 +148,13 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
   std::vector<std::tuple<double, size_t, size_t>> candidates;
   for (size_t k = 0; k < tracks_.size(); ++k) {
     std::vector<double> votes(n_items, 0.0);
-    for (const auto& px : carried[k].pixels) {
-      const uint16_t label = labelAt(labels, px);
-      if (label && label <= max_label && item_of[label] >= 0) votes[size_t(item_of[label])] += 1.0;
-    }
-    const double n = std::max<size_t>(1, carried[k].pixels.size());
+    for (const auto* pixels : {&carried[k].pixels, &carried[k].voters})
+      for (const auto& px : *pixels) {
+        const uint16_t label = labelAt(labels, px);
+        if (label && label <= max_label && item_of[label] >= 0)
+          votes[size_t(item_of[label])] += 1.0;
+      }
+    const double n = std::max<size_t>(1, carried[k].pixels.size() + carried[k].voters.size());
     for (size_t m = 0; m < n_items; ++m) {
       if (items[m].class_name != tracks_[k].class_name) continue;
       const double smaller = std::min(area_prev[k], area_cur[m]);
@@ -161,6 +180,28 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
 std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
     const Track& track, const std::vector<Vec3>& p_camera, const Instance* instance,
     const ObjectTrackerInput& input) const {
+  // Most of a person's mask without usable depth (beyond the sensor's range), head and feet in
+  // view: its pixel height and a stature prior give the range (height_range.hpp) until depth
+  // covers the mask.
+  const bool little_depth = instance && track.depth_share < config_.min_depth_share;
+  if (little_depth && track.class_name == "person")
+    if (const auto extent = personExtent(input.instances.labels, *instance)) {
+      const Mat3 R_world_camera = input.T_world_camera.linear();
+      // Up: the first camera's (the world frame's) -y, seen from this camera.
+      const Vec3 up_camera = R_world_camera.transpose() * Vec3(0.0, -1.0, 0.0);
+      const auto range = rangeFromHeight(*extent, input.camera, up_camera);
+      // Depth of the mask, or of what borders it, nearer than the range allows (2 sigma): not a
+      // whole person (an arm beside a cabinet in the simulated crossing read 10 m at 3.9 m).
+      const double nearest_z_m = range ? range->p_camera.z() - 2.0 * range->sigma_range_m : 0.0;
+      const double z_mask_m =
+          medianMaskDepth(*instance, input.instances.labels, input.depth_m, sample_step_px_);
+      if (range && !(z_mask_m > 0.0 && z_mask_m < nearest_z_m) &&
+          nearerOutlineShare(input.instances.labels, input.depth_m, instance->id, instance->box,
+                             nearest_z_m) < kMaxNearerOutlineShare)
+        return Centre{range->p_camera,
+                      R_world_camera * range->cov_frame_camera * R_world_camera.transpose(),
+                      range->scale_sigma, true};
+    }
   auto centre = objectCentre(p_camera, config_.depth_band_m,
                              behindSurface(track.class_name, p_camera, config_));
   if (!centre) return std::nullopt;
@@ -178,15 +219,15 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
   // a walking speed sideways while the rest comes into range).
   const bool cut = instance && cutSide(*instance, input.instances.labels.cols) != 0;
   const bool no_trunk = instance && track.class_name == "person" && !track.trunk;
-  const bool little_depth = instance && track.depth_share < config_.min_depth_share;
-  if (!cut && !no_trunk && !little_depth) return Centre{*centre, std::nullopt};
+  if (!cut && !no_trunk && !little_depth) return Centre{*centre, std::nullopt, 0.0, true};
   const double s2 = config_.position_sigma_m * config_.position_sigma_m;
   const double u2 = kUnmeasuredSigmaM * kUnmeasuredSigmaM;
   const Mat3 cov_camera = Vec3(cut || little_depth ? u2 : s2, no_trunk || little_depth ? u2 : s2,
                                cut || little_depth ? u2 : s2)
                               .asDiagonal();
   const Mat3 R_world_camera = input.T_world_camera.linear();
-  return Centre{*centre, R_world_camera * cov_camera * R_world_camera.transpose()};
+  return Centre{*centre, R_world_camera * cov_camera * R_world_camera.transpose(), 0.0,
+                !cut && !little_depth};
 }
 
 ObjectSample ObjectTracker::samplePixels(const Instance& instance,
@@ -204,12 +245,16 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
                          const ObjectTrackerInput& input) const {
   track.pixels.clear();
   track.p_world.clear();
+  track.voters.clear();
   track.depth_share = 0.0;
   std::vector<float> z(pixels.size());
   std::vector<float> valid;
   for (size_t i = 0; i < pixels.size(); ++i) {
     z[i] = depthAt(input.depth_m, pixels[i]);
-    if (z[i] > 0.f) valid.push_back(z[i]);
+    if (z[i] > 0.f)
+      valid.push_back(z[i]);
+    else
+      track.voters.push_back(pixels[i]);
   }
   if (valid.empty()) return;
   // Pixels of a mask that spills over its outline see the background far behind: only points
@@ -237,6 +282,8 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.pixels.clear();
     for (const auto& px : carried.pixels) track.pixels.emplace_back(float(px.x()), float(px.y()));
     track.p_world = carried.p_prev_world;
+    track.voters.clear();
+    for (const auto& px : carried.voters) track.voters.emplace_back(float(px.x()), float(px.y()));
     return;
   }
   // Keep the carried points that are still on the object: on its mask when the segmenter saw
@@ -289,11 +336,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.trunk = sample.trunk;
   } else {
     lift(track, kept_pixels, input);
+    // The voters stay voters while the object is unseen: without a mask nothing says a pixel
+    // that now has depth is still on it.
+    track.voters.clear();
+    for (const auto& px : carried.voters) track.voters.emplace_back(float(px.x()), float(px.y()));
   }
   std::vector<Vec3> p_camera;
   p_camera.reserve(track.p_world.size());
   for (const Vec3& p : track.p_world) p_camera.push_back(T_camera_world * p);
+  bool ranged_centre = false;  // placed by its height this frame (no depth)
   if (const auto centre = measureCentre(track, p_camera, instance, input)) {
+    ranged_centre = centre->scale_sigma > 0.0;
     // The centre measured whole (the segmenter saw all of it, the trunk of a person) carries
     // the velocity over the frames; the one-frame rigid motion is needed only until it has done
     // so for a while, or while part of the centre is unknown. Its error is mostly a bias (the
@@ -303,10 +356,60 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.whole_centre_frames = whole ? track.whole_centre_frames + 1 : 0;
     const bool use_motion = config_.motion_velocity_frames < 0 || !whole ||
                             track.whole_centre_frames <= config_.motion_velocity_frames;
-    track.filter.update(input.T_world_camera * centre->p_camera,
-                        use_motion ? v_measured : std::nullopt, centre->cov_world);
+    const Vec3 p_world = input.T_world_camera * centre->p_camera;
+    const Vec3 camera_world = input.T_world_camera.translation();
+    std::optional<Mat3> cov_world = centre->cov_world;
+    bool restarted = false;  // the filter starts afresh at this centre
+    if (centre->scale_sigma > 0.0 && track.ranged_scale_sigma <= 0.0) {
+      // Depth placed this person before (the filter is metric) and now it is beyond the range:
+      // the stature's error is new to the filter. It enters every frame as if independent
+      // (an approximation: the filter then trusts the range a little more than it should).
+      const Vec3 d = p_world - camera_world;
+      *cov_world += centre->scale_sigma * centre->scale_sigma * d * d.transpose();
+    } else if (centre->scale_sigma <= 0.0 && centre->depth_measured &&
+               track.ranged_scale_sigma > 0.0) {
+      // Depth places a person the height range placed so far: the stature's common error enters
+      // the filter now, with the position-velocity correlation of a scale, so this update
+      // corrects the position (and the velocity, in the prior's units) the ranges measured.
+      // The ranges' velocity also rests on the mask's ends being unbiased from frame to frame,
+      // which a segmenter does not promise for a far person (a mask short by 5 px at each end
+      // reads 12 % far at 11 m, 6 % at 5 m: it approaches too fast): it stays only as a guess as
+      // wide as a new track's prior (docs/tracking.md step 6).
+      KalmanCv::Mat6 Q = statureCovariance(track.filter.position(), track.filter.velocity(),
+                                           camera_world, track.ranged_scale_sigma);
+      Q.bottomRightCorner<3, 3>() +=
+          Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
+      track.filter.addCovariance(Q);
+      track.ranged_scale_sigma = 0.0;
+      // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
+      // feet: eroded 5 px, one read 35 m at 11 m): then the filter starts afresh at the depth.
+      const Mat3 S = track.filter.covariance().topLeftCorner<3, 3>() +
+                     cov_world.value_or(Mat3::Identity() * config_.position_sigma_m *
+                                        config_.position_sigma_m);
+      const Vec3 innovation = p_world - track.filter.position();
+      if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
+        track.filter = KalmanCv(p_world,
+                                {config_.accel_sigma_mps2, config_.position_sigma_m,
+                                 config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
+                                cov_world);
+        restarted = true;
+      }
+    }
+    if (!restarted) track.filter.update(p_world, use_motion ? v_measured : std::nullopt, cov_world);
   } else {
     track.whole_centre_frames = 0;
+  }
+  const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
+  const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
+  if (ranged_centre) {
+    // Placed by its height, without depth: the dynamics stage has nothing to find it moving by,
+    // so its "not moving" says nothing (a walker 10 m down a hall was held still until depth
+    // reached it); the filter's own velocity, once known, does. The filter is not held still:
+    // its centres are all that shows the person setting off.
+    const bool slow = filterVelocityKnown(track) && isSlow(track.filter.velocity());
+    track.still = slow ? track.still + 1 : 0;
+    track.stationary = verified_static || track.still >= config_.static_after_frames;
+    return;
   }
   // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
   if (instance) {
@@ -316,12 +419,10 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // Not found moving for a while and measured slow, or not found moving for three times as
   // long: static (a verdict that flickers off for a few frames of a walker does not stop it;
   // a chair's noisy speed does not keep it moving).
-  const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
   // Slow: the filtered speed, or this frame's rigid motion of the points — after a stop the
   // points stop at once while the filtered velocity would decay over the filter's memory.
   // A new track's filtered velocity is its prior (0 +- 1 m/s): that says nothing of slowness (a
   // walker far down a hall, not yet flagged moving, was held still for its first frames).
-  const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
   const bool slow = (filterVelocityKnown(track) && isSlow(track.filter.velocity())) ||
                     (v_measured && isSlow(*v_measured));
   track.stationary = verified_static || (track.still >= config_.static_after_frames &&
@@ -352,12 +453,14 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
   const auto centre = measureCentre(t, p_camera, &instance, input);
   if (!centre) return std::nullopt;
-  t.filter = KalmanCv(
-      input.T_world_camera * centre->p_camera,
-      {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps, 1.0},
-      centre->cov_world);
+  t.filter = KalmanCv(input.T_world_camera * centre->p_camera,
+                      {config_.accel_sigma_mps2, config_.position_sigma_m,
+                       config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
+                      centre->cov_world);
+  t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
-  t.still = moving ? 0 : 1;
+  // Placed by its height: no verdict to go by (update's static rule for such tracks).
+  t.still = moving || t.ranged_scale_sigma > 0.0 ? 0 : 1;
   if (contains(input.dynamics.static_ids, instance.id)) t.still = config_.static_after_frames;
   t.stationary = t.still >= config_.static_after_frames;
   t.id = next_id_++;
@@ -377,10 +480,19 @@ TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& in
   fillViewGeometry(o);
   o.points = int(t.pixels.size());
   o.covariance = t.filter.covariance();
+  const Vec3 camera_world = input.T_world_camera.translation();
+  if (t.ranged_scale_sigma > 0.0)
+    o.covariance +=
+        statureCovariance(o.p_world, t.filter.velocity(), camera_world, t.ranged_scale_sigma);
   o.missed_frames = t.missed;
   o.motion_inliers = t.inliers;
-  if (!t.stationary)
+  if (!t.stationary) {
     o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
+    // The stature's error along the predicted ray (an upper bound of the largest eigenvalue).
+    if (t.ranged_scale_sigma > 0.0)
+      for (PathPoint& p : o.predicted_path)
+        p.sigma_m = std::hypot(p.sigma_m, t.ranged_scale_sigma * (p.p_world - camera_world).norm());
+  }
   return o;
 }
 

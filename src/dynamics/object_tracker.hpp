@@ -47,9 +47,12 @@ class ObjectTracker {
     std::string class_name;
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
-    uint16_t instance = 0;            // label in the last frame (0: carried)
-    bool trunk = false;               // the points are a person's trunk
-    double depth_share = 1.0;         // share of the sampled mask pixels with usable depth
+    // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
+    // flow only to vote in the association, so such a track survives a missed frame.
+    std::vector<cv::Point2f> voters;
+    uint16_t instance = 0;     // label in the last frame (0: carried)
+    bool trunk = false;        // the points are a person's trunk
+    double depth_share = 1.0;  // share of the sampled mask pixels with usable depth
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
     int missed = 0;
@@ -57,11 +60,17 @@ class ObjectTracker {
     bool stationary = false;  // reported with zero velocity
     int inliers = 0;
     int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
+    // > 0: every centre the filter has heard came from the height range (height_range.hpp), so
+    // they share one error, the stature's (this relative sigma), which the filter was not told of
+    // (it would have averaged it as if new in every frame); reported beside the filter's
+    // covariance and handed to the filter when depth first places the person.
+    double ranged_scale_sigma = 0.0;
     double last_stamp_s = 0.0;
   };
   struct Carried {  // one track's points carried into this frame
     std::vector<Vec3> p_prev_world;
     std::vector<Eigen::Vector2d> pixels;
+    std::vector<Eigen::Vector2d> voters;  // Track::voters carried (no 3D)
   };
 
   std::vector<int> associate(const ObjectTrackerInput& input, const std::vector<Carried>& carried);
@@ -73,6 +82,10 @@ class ObjectTracker {
   struct Centre {
     Vec3 p_camera;
     std::optional<Mat3> cov_world;  ///< measurement noise (m^2); none: the configured one
+    /// From the height range: relative sigma of the stature, an error common to all frames and
+    /// not in cov_world (0: not from the height range).
+    double scale_sigma = 0.0;
+    bool depth_measured = false;  ///< its distance is measured (by depth or the height range)
   };
   /// The object's centre from its points (camera frame), with the components its visible part
   /// does not measure marked unknown.
@@ -81,7 +94,8 @@ class ObjectTracker {
                                       const ObjectTrackerInput& input) const;
   /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
   ObjectSample samplePixels(const Instance& instance, const ObjectTrackerInput& input) const;
-  /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped.
+  /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped,
+  /// those without depth kept as voters.
   void lift(Track& track, const std::vector<cv::Point2f>& pixels,
             const ObjectTrackerInput& input) const;
   TrackedObject report(const Track& track, const ObjectTrackerInput& input) const;
