@@ -8,8 +8,9 @@
 # head-turns-walkers with `masks` the people are cut out of extraction (so flagged keypoints are
 # static ones too); with `none` the share also counts keypoints on the walkers (true movers), so
 # it is an upper bound of the false share there.
-# Prints Markdown; outputs stay in OUT_DIR.
-# Usage: scripts/head_turn_results.sh [BUILD_DIR] [OUT_DIR] [extra run flags...]
+# Prints Markdown; outputs stay in OUT_DIR. SEEDS (default "1") lists the simulator seeds: single
+# runs of these scenes move by several percent with small changes, so judge a change on several.
+# Usage: [SEEDS="1 2 3"] scripts/head_turn_results.sh [BUILD_DIR] [OUT_DIR] [extra run flags...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/release}
@@ -32,27 +33,29 @@ flagged() {  # flagged RUN_DIR -> "dynamic total share%" over the run ("-" with 
          end' "$1/stats.json"
 }
 
-echo "| scene | flags | ATE RMSE (m) | tracked | vs --dynamic off | keypoints flagged dynamic |"
-echo "|---|---|---|---|---|---|"
+echo "| scene | seed | flags | ATE RMSE (m) | tracked | vs --dynamic off | keypoints flagged dynamic |"
+echo "|---|---|---|---|---|---|---|"
 for scene in head-turns head-turns-walkers; do
-  sim="$out/sim_$scene"
-  [[ -f "$sim/groundtruth.txt" ]] ||
-    "$cli" simulate --scenario "$scene" --seed 1 --rolling-shutter-ms 25 --exposure-ms 10 \
-      --out "$sim" >/dev/null
-  off_rmse=""
-  for mode in off none masks; do
-    case $mode in
-      off) args=(--dynamic off) ;;
-      *) args=(--segmenter "$mode") ;;
-    esac
-    run="$out/${scene}_$mode"
-    "$cli" run "$sim" --out "$run" --quiet --deterministic "${args[@]}" "${extra[@]}"
-    read -r rmse tracked < <(ate "$sim" "$run")
-    read -r dyn total share < <(flagged "$run")
-    [[ $mode == off ]] && off_rmse=$rmse
-    rel=$(awk -v a="$rmse" -v b="$off_rmse" 'BEGIN {printf "%+.1f %%", 100 * (a - b) / b}')
-    flags_text="-"
-    [[ $dyn != "-" ]] && flags_text="$dyn of $total ($share %)"
-    echo "| $scene | \`${args[*]} ${extra[*]}\` | $rmse | $tracked | $rel | $flags_text |"
+  for seed in ${SEEDS:-1}; do
+    sim="$out/sim_${scene}_seed$seed"
+    [[ -f "$sim/groundtruth.txt" ]] ||
+      "$cli" simulate --scenario "$scene" --seed "$seed" --rolling-shutter-ms 25 --exposure-ms 10 \
+        --out "$sim" >/dev/null
+    off_rmse=""
+    for mode in off none masks; do
+      case $mode in
+        off) args=(--dynamic off) ;;
+        *) args=(--segmenter "$mode") ;;
+      esac
+      run="$out/${scene}_seed${seed}_$mode"
+      "$cli" run "$sim" --out "$run" --quiet --deterministic "${args[@]}" "${extra[@]}"
+      read -r rmse tracked < <(ate "$sim" "$run")
+      read -r dyn total share < <(flagged "$run")
+      [[ $mode == off ]] && off_rmse=$rmse
+      rel=$(awk -v a="$rmse" -v b="$off_rmse" 'BEGIN {printf "%+.1f %%", 100 * (a - b) / b}')
+      flags_text="-"
+      [[ $dyn != "-" ]] && flags_text="$dyn of $total ($share %)"
+      echo "| $scene | $seed | \`${args[*]} ${extra[*]}\` | $rmse | $tracked | $rel | $flags_text |"
+    done
   done
 done
