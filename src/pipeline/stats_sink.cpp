@@ -109,7 +109,11 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
 
 void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
   latency_ms_.push_back(result.latency_ms);
-  if (latency_ms_.size() % 100 == 1) rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
+  if (latency_ms_.size() % 100 == 1) {
+    rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
+    keyframes_curve_.push_back(
+        {int64_t(latency_ms_.size()), int64_t(result.map_keyframes), KeyFrame::instances()});
+  }
   if (result.dynamics) dynamics_.push_back(*result.dynamics);
   const int segmented = result.instances.segmented_index;
   if (segmented >= 0 && (arrivals_.empty() || segmented > arrivals_.back().first))
@@ -164,7 +168,10 @@ void StatsSink::finish(const RunEnd& end) {
       {"stage_ms", stages},
       {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
       {"peak_rss_mb", peakRssMb()},
-      {"rss_mb", rss_mb_}};  // [processed frames, MiB] every 100 frames: the memory curve
+      {"rss_mb", rss_mb_},  // [processed frames, MiB] every 100 frames: the memory curve
+      // [processed frames, keyframes in the map, keyframe objects in memory], same samples
+      {"keyframes_curve", keyframes_curve_},
+      {"keyframes_in_memory", KeyFrame::instances()}};
   stats["segmentation_arrivals"] = arrivals_;
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
