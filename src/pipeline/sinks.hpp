@@ -80,6 +80,7 @@ class StatsSink final : public FrameSink {
   // (processed frames, keyframes in the map, KeyFrame objects in memory), sampled with rss_mb_:
   // the second exceeds the first by the culled keyframes still held.
   std::vector<std::array<int64_t, 3>> keyframes_curve_;
+  std::vector<std::pair<int, double>> heap_mb_;  // (processed frames, live heap MiB), same samples
 };
 
 /// A progress bar on stderr.
