@@ -148,8 +148,8 @@ void registerRun(CLI::App& root, Action& chosen) {
   sub->add_option("--max-frames", flags->max_frames, "process at most N frames (0 = all)")
       ->check(finiteRange(0, 2147483647));
   sub->add_option("--passes", flags->passes,
-                  "play the sequence N times in a row, time running on (a long-run test; "
-                  "relocalises at each restart)")
+                  "play the sequence N times, alternately forward and backward so the camera "
+                  "path stays continuous, time running on (a long-run test)")
       ->check(finiteRange(1, 1000000));
   sub->add_option("--blackout", flags->blackout,
                   "A:B replace frames A..B (0-based, inclusive) by black images and no depth");

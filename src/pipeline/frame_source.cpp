@@ -19,55 +19,69 @@ RgbdFrame blackFrame(const RgbdFrame& like, const PinholeCamera& camera) {
 
 }  // namespace
 
+PassStep passStep(size_t delivered, size_t per_pass) {
+  PassStep step;
+  if (per_pass == 0) return step;
+  step.pass = static_cast<int>(delivered / per_pass);
+  step.backward = step.pass % 2 == 1;
+  const size_t position = delivered % per_pass;
+  step.index = step.backward ? per_pass - 1 - position : position;
+  return step;
+}
+
+double passStamp(double stamp_s, const PassStep& step, double first_s, double last_s,
+                 double span_s) {
+  const double pass_start_s = first_s + step.pass * span_s;
+  return pass_start_s + (step.backward ? last_s - stamp_s : stamp_s - first_s);
+}
+
 SequenceSource::SequenceSource(const SequenceSourceOptions& options)
     : options_(options),
       sequence_(TumSequence::open(options.dir, options.io, options.fallback_camera)) {
   total_ = sequence_.size();
   if (options.max_frames > 0) total_ = std::min<size_t>(total_, options.max_frames);
-  if (total_ > 1) {
+  if (total_ > 0) {
     const auto& pairs = sequence_.pairs();
-    const double first = pairs.front().rgb.stamp_s, last = pairs[total_ - 1].rgb.stamp_s;
-    pass_span_s_ = (last - first) * double(total_) / double(total_ - 1);
+    first_s_ = pairs.front().rgb.stamp_s;
+    last_s_ = pairs[total_ - 1].rgb.stamp_s;
+    if (total_ > 1) pass_span_s_ = (last_s_ - first_s_) * double(total_) / double(total_ - 1);
   }
   prefetch();
 }
 
 void SequenceSource::prefetch() {
-  if (position_ >= total_) return;
-  next_ = std::async(std::launch::async, [this, i = position_] { return sequence_.load(i); });
+  if (delivered_ >= expected()) return;
+  const size_t index = passStep(delivered_, total_).index;
+  next_ = std::async(std::launch::async, [this, index] { return sequence_.load(index); });
 }
 
 std::optional<RgbdFrame> SequenceSource::next() {
-  for (;;) {
-    if (position_ >= total_) {
-      if (pass_ + 1 >= options_.passes || total_ == 0) return std::nullopt;
-      ++pass_;  // the next pass: the same images, later in time, counted on
-      position_ = 0;
-      prefetch();
-    }
-    const int index = static_cast<int>(position_);
+  while (delivered_ < expected()) {
+    const PassStep step = passStep(delivered_, total_);
+    const int index = static_cast<int>(step.index);
     RgbdFrame frame;
     try {
       frame = next_.get();
     } catch (const InputError& e) {
       ++skipped_;
       spdlog::warn("frame {} skipped: {}", index, e.what());
-      ++position_;
+      ++delivered_;
       prefetch();
       continue;
     }
-    ++position_;
+    frame.index = static_cast<int>(delivered_);  // the place in the played stream
+    ++delivered_;
     prefetch();
     const auto& blackout = options_.blackout;
     if (blackout && index >= blackout->first && index <= blackout->second)
       frame = blackFrame(frame, camera());
-    if (pass_ > 0) {
-      frame.index += pass_ * int(total_);
-      frame.stamp_s += pass_ * pass_span_s_;
-      frame.depth_stamp_s += pass_ * pass_span_s_;
+    if (step.pass > 0) {
+      frame.stamp_s = passStamp(frame.stamp_s, step, first_s_, last_s_, pass_span_s_);
+      frame.depth_stamp_s = passStamp(frame.depth_stamp_s, step, first_s_, last_s_, pass_span_s_);
     }
     return frame;
   }
+  return std::nullopt;
 }
 
 std::string SequenceSource::describe() const {

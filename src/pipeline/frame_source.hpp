@@ -41,8 +41,31 @@ struct SequenceSourceOptions {
   std::optional<PinholeCamera> fallback_camera;  ///< used when the folder says nothing
   std::optional<std::pair<int, int>> blackout;   ///< inclusive 0-based frame range made black
   int max_frames = 0;                            ///< 0 = all (per pass)
-  int passes = 1;  ///< > 1: play the sequence again and again (a long-run test); time keeps running
+  /// > 1: play the sequence again and again (a long-run test), alternately forward and backward
+  /// (passStep), time running on (passStamp).
+  int passes = 1;
 };
+
+/// Where the frame delivered in place `delivered` (0-based over all passes) comes from when a
+/// sequence of `per_pass` frames is played in passes. Passes alternate direction (forward,
+/// backward, forward, ...) so that the camera path stays continuous: replaying from the start
+/// would teleport the camera from the last pose to the first between two frames, which no camera
+/// does and which a tracker may follow as a small move, mapping the same images again elsewhere.
+/// A backward pass starts with the frame the forward pass ended on: the camera holds still for
+/// one frame interval, then retraces its path.
+struct PassStep {
+  int pass = 0;
+  size_t index = 0;  ///< 0-based frame of the sequence
+  bool backward = false;
+};
+PassStep passStep(size_t delivered, size_t per_pass);
+
+/// The stamp (s) that a sequence stamp `stamp_s` gets in pass `pass` of a sequence spanning
+/// `first_s`..`last_s`: each pass starts `span_s` after the one before (the sequence's duration
+/// plus one frame interval); a backward pass mirrors the stamps, so intervals between frames are
+/// the recorded ones, in reverse, and stamps keep increasing.
+double passStamp(double stamp_s, const PassStep& step, double first_s, double last_s,
+                 double span_s);
 
 /// A TUM-layout folder (TUM, Bonn, `dynanav simulate` output). Decoding the next frame's images
 /// overlaps with processing this one (a pure function of the files: deterministic). A blackout
@@ -66,10 +89,10 @@ class SequenceSource final : public FrameSource {
 
   SequenceSourceOptions options_;
   TumSequence sequence_;
-  size_t total_ = 0;     // frames per pass
-  size_t position_ = 0;  // index (within the pass) of the frame being prefetched
-  int pass_ = 0;
-  double pass_span_s_ = 0.0;  // a pass's duration plus one frame interval
+  size_t total_ = 0;                     // frames per pass
+  size_t delivered_ = 0;                 // place (over all passes) of the frame being prefetched
+  double first_s_ = 0.0, last_s_ = 0.0;  // stamps of a pass's first and last frames
+  double pass_span_s_ = 0.0;             // a pass's duration plus one frame interval
   int skipped_ = 0;
   std::future<RgbdFrame> next_;
 };

@@ -1,6 +1,7 @@
 #pragma once
 // Writers are consumers of FrameResult (DESIGN.md §1, sinks): registered once, each gets every
 // processed frame in order, then the end of the run once the map is final.
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -76,6 +77,10 @@ class StatsSink final : public FrameSink {
   std::vector<std::pair<int, int>> arrivals_;
   std::vector<std::pair<int, double>>
       rss_mb_;  // (processed frames, resident MiB), every 100 frames
+  // (processed frames, keyframes in the map, KeyFrame objects in memory), sampled with rss_mb_:
+  // the second exceeds the first by the culled keyframes still held.
+  std::vector<std::array<int64_t, 3>> keyframes_curve_;
+  std::vector<std::pair<int, double>> heap_mb_;  // (processed frames, live heap MiB), same samples
 };
 
 /// A progress bar on stderr.

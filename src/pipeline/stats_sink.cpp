@@ -1,5 +1,6 @@
 // StatsSink: stats.json, assembled here from the records the pipeline returned (FrameResult)
 // and the stage timers; no module builds JSON of its own.
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include "io/json_io.hpp"
@@ -105,11 +106,28 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
     stats["feedback_audio"]["live"] = {{"device", a.live_device}, {"underruns", a.live_underruns}};
 }
 
+/// Bytes malloc has handed out and not had back (every arena; large mmapped blocks included), in
+/// MiB: the live heap. Resident memory can stay above it after a big transient allocation (a
+/// global bundle adjustment) because freed pages are kept by the allocator.
+double heapInUseMb() {
+#if defined(__GLIBC__)
+  const struct mallinfo2 info = mallinfo2();
+  return double(info.uordblks + info.hblkhd) / (1024.0 * 1024.0);
+#else
+  return -1.0;
+#endif
+}
+
 }  // namespace
 
 void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
   latency_ms_.push_back(result.latency_ms);
-  if (latency_ms_.size() % 100 == 1) rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
+  if (latency_ms_.size() % 100 == 1) {
+    rss_mb_.emplace_back(int(latency_ms_.size()), currentRssMb());
+    heap_mb_.emplace_back(int(latency_ms_.size()), heapInUseMb());
+    keyframes_curve_.push_back(
+        {int64_t(latency_ms_.size()), int64_t(result.map_keyframes), KeyFrame::instances()});
+  }
   if (result.dynamics) dynamics_.push_back(*result.dynamics);
   const int segmented = result.instances.segmented_index;
   if (segmented >= 0 && (arrivals_.empty() || segmented > arrivals_.back().first))
@@ -164,7 +182,11 @@ void StatsSink::finish(const RunEnd& end) {
       {"stage_ms", stages},
       {"latency_ms", {{"mean", latency.mean_ms}, {"p95", latency.p95_ms}, {"max", latency.max_ms}}},
       {"peak_rss_mb", peakRssMb()},
-      {"rss_mb", rss_mb_}};  // [processed frames, MiB] every 100 frames: the memory curve
+      {"rss_mb", rss_mb_},  // [processed frames, MiB] every 100 frames: the memory curve
+      // [processed frames, keyframes in the map, keyframe objects in memory], same samples
+      {"keyframes_curve", keyframes_curve_},
+      {"heap_mb", heap_mb_},  // [processed frames, MiB malloc'd and not freed], same samples
+      {"keyframes_in_memory", KeyFrame::instances()}};
   stats["segmentation_arrivals"] = arrivals_;
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");

@@ -6,9 +6,23 @@ namespace dynanav {
 
 KeyFrame::KeyFrame(uint64_t id_, uint64_t frame_id_, double stamp, Features f, const SE3& T_cw,
                    std::vector<MapPointPtr> points)
-    : id(id_), frame_id(frame_id_), stamp_s(stamp), features(std::move(f)),
+    : id(id_),
+      frame_id(frame_id_),
+      stamp_s(stamp),
+      features(std::move(f)),
       map_points(std::move(points)) {
   setPose(T_cw);
+  ++instances_;
+}
+
+std::atomic<int64_t> KeyFrame::instances_{0};
+
+KeyFrame::~KeyFrame() {
+  --instances_;
+}
+
+int64_t KeyFrame::instances() {
+  return instances_.load();
 }
 
 void KeyFrame::sortConnections() {

@@ -2,6 +2,7 @@
 // A keyframe (ORB-SLAM2 KeyFrame): the frame's features, its pose, the map points its keypoints
 // observe, and its place in the covisibility graph and spanning tree. Graph links are raw
 // pointers ordered by keyframe id; the Map owns keyframes (shared_ptr) and unlinks culled ones.
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -19,6 +20,13 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
  public:
   KeyFrame(uint64_t id, uint64_t frame_id, double stamp_s, Features features,
            const SE3& T_camera_world, std::vector<MapPointPtr> map_points);
+  ~KeyFrame();
+  KeyFrame(const KeyFrame&) = delete;
+  KeyFrame& operator=(const KeyFrame&) = delete;
+  /// KeyFrame objects alive in this process, culled ones still held included: beside the map's
+  /// count it shows whether culled keyframes (and the features, words and points they hold) are
+  /// freed over a long run.
+  [[nodiscard]] static int64_t instances();
 
   const uint64_t id;
   const uint64_t frame_id;
@@ -79,6 +87,7 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   SE3 T_camera_world_;
   SE3 T_world_camera_;
   bool first_connection_ = true;
+  static std::atomic<int64_t> instances_;
 };
 
 using KeyFramePtr = std::shared_ptr<KeyFrame>;

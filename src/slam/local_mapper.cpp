@@ -141,8 +141,8 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
   options.linear_solver = config_.ba_linear_solver;
   const BaResult result = bundleAdjust(problem, options);
   spdlog::debug("local BA kf {}: {} keyframes, {} points, {} observations, rms {:.3f} -> {:.3f} px",
-                keyframe.id, problem.keyframes.size(), problem.points.size(), problem.observations.size(),
-                result.initial_rms_px, result.final_rms_px);
+                keyframe.id, problem.keyframes.size(), problem.points.size(),
+                problem.observations.size(), result.initial_rms_px, result.final_rms_px);
   std::unique_lock lock(map_.mutex());
   applyLocalBa(problem, result, index);
   ++stats_.bundle_adjustments;
@@ -160,8 +160,8 @@ void LocalMapper::finalBundleAdjustment() {
   options.iterations_second = config_.final_ba_iterations;
   options.linear_solver = config_.ba_linear_solver;
   const GlobalBaRun run = runGlobalBa(map_, options);
-  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes, run.points,
-                run.result.initial_rms_px, run.result.final_rms_px);
+  spdlog::debug("final BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes,
+                run.points, run.result.initial_rms_px, run.result.final_rms_px);
   if (timers_) timers_->add("final_ba", msSince(start));
 }
 
@@ -188,8 +188,7 @@ void LocalMapper::cullRedundantKeyFrames(KeyFrame& keyframe) {
       if (observers >= min_observers) ++redundant;
     }
     if (redundant > config_.redundant_keyframe_ratio * points) {
-      kf->setBad();
-      ++stats_.keyframes_culled;
+      if (map_.cullKeyFrame(*kf)) ++stats_.keyframes_culled;
     }
   }
 }

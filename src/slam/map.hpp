@@ -29,6 +29,17 @@ class Map {
     keyframes_.emplace(kf->id, kf);
     return kf;
   }
+  /// Culls a keyframe (KeyFrame::setBad) and drops every covisibility link left to it: links are
+  /// not symmetric (as in ORB-SLAM2, a keyframe keeps its link to one that dropped it in its own
+  /// last update), so setBad() cannot reach them all from the culled side, and a raw pointer left
+  /// behind would dangle once nothing holds the culled keyframe and it is freed. Returns false
+  /// when the keyframe may not be culled (keyframe 0, a loop's end).
+  bool cullKeyFrame(KeyFrame& keyframe) {
+    keyframe.setBad();
+    if (!keyframe.bad) return false;
+    for (const auto& [id, kf] : keyframes_) kf->eraseConnection(&keyframe);
+    return true;
+  }
   /// Drops bad keyframes and points from the containers (they stay alive while referenced).
   void removeBad() {
     std::erase_if(points_, [](const auto& kv) { return kv.second->bad; });

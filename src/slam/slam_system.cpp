@@ -84,10 +84,11 @@ TrackOutcome SlamSystem::trackLocalMap(Frame& frame, InitialPose initial) {
 
 void SlamSystem::finishFrame(const Frame& frame, const TrackOutcome& outcome) {
   mapping_->runPending();
-  if (outcome.state != TrackingState::kOk || !outcome.reference) return;
   std::unique_lock lock(map_->mutex());  // the reference's pose may be under local BA
-  anchors_.push_back({frame.stamp_s, outcome.reference,
-                      frame.T_camera_world * outcome.reference->T_world_camera()});
+  if (outcome.state == TrackingState::kOk && outcome.reference)
+    anchors_.add(frame.stamp_s, outcome.reference,
+                 frame.T_camera_world * outcome.reference->T_world_camera());
+  anchors_.reanchorCulled();
 }
 
 void SlamSystem::finish() {
@@ -110,11 +111,7 @@ std::vector<StampedPose> SlamSystem::keyframePoses() const {
 
 std::vector<StampedPose> SlamSystem::refinedTrajectory() const {
   std::unique_lock lock(map_->mutex());
-  std::vector<StampedPose> poses;
-  poses.reserve(anchors_.size());
-  for (const auto& a : anchors_)
-    poses.push_back({a.stamp_s, anchoredPose(*a.reference, a.T_frame_reference).inverse()});
-  return poses;
+  return anchors_.poses();
 }
 
 std::vector<LoopEvent> SlamSystem::loops() const {

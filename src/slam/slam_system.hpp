@@ -15,6 +15,7 @@
 #include "slam/keypoint_drop.hpp"
 #include "slam/local_mapper.hpp"
 #include "slam/tracker.hpp"
+#include "slam/trajectory_anchors.hpp"
 
 namespace dynanav {
 
@@ -48,7 +49,8 @@ class SlamSystem {
   /// 6. Local-map tracking on the static points left, and the keyframe decision.
   TrackOutcome trackLocalMap(Frame& frame, InitialPose initial);
   /// 10. Local mapping of the new keyframes (inline in deterministic mode), then remembers the
-  /// frame's anchor on its reference keyframe for the refined trajectory.
+  /// frame's anchor on its reference keyframe for the refined trajectory, and moves anchors off
+  /// keyframes culled meanwhile so those can be freed.
   void finishFrame(const Frame& frame, const TrackOutcome& outcome);
   /// Drains local mapping, joins a running global BA, then runs the final whole-map BA
   /// (idempotent).
@@ -83,12 +85,7 @@ class SlamSystem {
   std::unique_ptr<LoopCloser> loop_closer_;
   uint64_t next_frame_id_ = 0;
   bool finished_ = false;
-  struct FrameAnchor {
-    double stamp_s;
-    std::shared_ptr<KeyFrame> reference;
-    SE3 T_frame_reference;
-  };
-  std::vector<FrameAnchor> anchors_;  ///< one per tracked frame
+  TrajectoryAnchors anchors_;  ///< one per tracked frame
 };
 
 }  // namespace dynanav
