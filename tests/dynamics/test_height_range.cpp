@@ -13,13 +13,7 @@ namespace {
 
 constexpr int kW = 640, kH = 480;
 
-PinholeCamera camera() {
-  PinholeCamera c;
-  c.fx = c.fy = 525.0;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
-}
+PinholeCamera camera() { return {}; }  // the default: 640x480, f = 525 px, centred
 
 /// An upright person of `stature_m` whose soles are at p_soles (camera frame, level camera: up
 /// is -y): crown and soles projected.
