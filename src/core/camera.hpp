@@ -16,13 +16,14 @@ struct PinholeCamera {
   int height = 480;
   double fx = 525.0, fy = 525.0, cx = 319.5, cy = 239.5;
   std::array<double, 5> distortion{0, 0, 0, 0, 0};  ///< k1, k2, p1, p2, k3
-  double depth_factor = 5000.0;  ///< raw 16-bit depth value per metre
+  double depth_factor = 5000.0;                     ///< raw 16-bit depth value per metre
   /// Virtual stereo baseline (m) for the RGB-D "right coordinate" u_r = u - fx*b/z (ORB-SLAM2's
   /// bf). Points deeper than `close_depth_baselines` baselines only constrain rotation well.
   double baseline_m = 0.08;
   double close_depth_baselines = 40.0;
   /// Rolling-shutter readout time of the colour camera (s): the delay between its first and last
-  /// row. 0 = global shutter (or not known). Tracking re-times keypoints with it (slam/rolling_shutter).
+  /// row. 0 = global shutter (or not known). Tracking re-times keypoints with it
+  /// (slam/rolling_shutter).
   double readout_s = 0.0;
   /// Exposure time of the colour camera (s); 0 = not known. A corner blurred over the exposure is
   /// found anywhere along its streak, so its pixel may miss the depth sample it is compared with
@@ -32,8 +33,8 @@ struct PinholeCamera {
   [[nodiscard]] bool isDistorted() const;
   [[nodiscard]] double bf() const { return fx * baseline_m; }
   [[nodiscard]] double closeDepthThreshold() const { return baseline_m * close_depth_baselines; }
-  [[nodiscard]] cv::Mat K() const;            ///< 3x3 CV_64F
-  [[nodiscard]] cv::Mat distCoeffs() const;   ///< 1x5 CV_64F
+  [[nodiscard]] cv::Mat K() const;           ///< 3x3 CV_64F
+  [[nodiscard]] cv::Mat distCoeffs() const;  ///< 1x5 CV_64F
 
   /// Pixel of a point in the camera frame (undistorted pinhole model). z must be > 0.
   [[nodiscard]] Eigen::Vector2d project(const Vec3& p_camera) const {
@@ -48,7 +49,8 @@ struct PinholeCamera {
   }
 
   /// Undistorted pixel positions of distorted ones (identity when not distorted).
-  [[nodiscard]] std::vector<cv::Point2f> undistortPixels(const std::vector<cv::Point2f>& pixels) const;
+  [[nodiscard]] std::vector<cv::Point2f> undistortPixels(
+      const std::vector<cv::Point2f>& pixels) const;
   /// Pixel distortion of an undistorted pixel (for rendering/simulation).
   [[nodiscard]] cv::Point2d distortPixel(const cv::Point2d& undistorted) const;
   /// Bounds of the undistorted image (ORB-SLAM's mnMinX..mnMaxY), from the corners.

@@ -32,7 +32,7 @@ Simulator::Simulator(const SimOptions& options) : options_(options) {
   camera_.cx = 319.5;
   camera_.cy = 239.5;
   camera_.depth_factor = 5000.0;
-  camera_.readout_s = options.readout_s;  // camera.yaml says it: SLAM re-times with the truth
+  camera_.readout_s = options.readout_s;    // camera.yaml says it: SLAM re-times with the truth
   camera_.exposure_s = options.exposure_s;  // and the depth test widens with the true blur
   options_.depth.focal_px = camera_.fx;
   // The world frame is the first camera frame, so the first ground-truth pose is the identity.

@@ -36,7 +36,7 @@ struct InitialPose {
   /// The camera's motion from the last frame to this initial pose (interval 0: not known, e.g.
   /// after a loss); dynamics widens its depth test with it.
   CameraVelocity motion_since_last;
-  TrackOutcome outcome;          ///< the result when `finished`
+  TrackOutcome outcome;  ///< the result when `finished`
 };
 
 class Tracker {

@@ -13,7 +13,9 @@ namespace {
 
 constexpr int kW = 640, kH = 480;
 
-PinholeCamera camera() { return {}; }  // the default: 640x480, f = 525 px, centred
+PinholeCamera camera() {
+  return {};
+}  // the default: 640x480, f = 525 px, centred
 
 /// An upright person of `stature_m` whose soles are at p_soles (camera frame, level camera: up
 /// is -y): crown and soles projected.
