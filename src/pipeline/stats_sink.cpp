@@ -1,6 +1,8 @@
 // StatsSink: stats.json, assembled here from the records the pipeline returned (FrameResult)
 // and the stage timers; no module builds JSON of its own.
 #include <malloc.h>
+
+#include <cmath>
 #include <sys/resource.h>
 
 #include "io/json_io.hpp"
@@ -118,6 +120,34 @@ double heapInUseMb() {
 #endif
 }
 
+/// Issue 18: the readout configured and the one estimated online (docs/dynamics.md).
+nlohmann::json rollingShutterJson(const SlamSystem& slam) {
+  const auto number_or_null = [](double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
+  const ReadoutEstimator& estimator = slam.readoutEstimator();
+  nlohmann::json stages = nlohmann::json::array();
+  for (const ReadoutStage& stage : slam.onlineReadoutStages())
+    stages.push_back({{"from_frame", stage.frame},
+                      {"readout_ms", stage.readout_s * 1e3},
+                      {"sigma_ms", stage.sigma_s * 1e3},
+                      {"frames", stage.frames}});
+  const auto& all = slam.onlineReadoutStages();
+  return {
+      {"configured_ms", slam.configuredReadoutS() * 1e3},
+      {"online", slam.readoutOnline()},
+      // Online: the readout re-timing used last (null before the first stage settled).
+      {"online_readout_ms",
+       all.empty() ? nlohmann::json(nullptr) : nlohmann::json(slam.onlineReadoutS() * 1e3)},
+      {"online_stages", stages},
+      // The evidence since the last stage (the whole run when not online), linearised at the
+      // readout in use: unbiased only when that is the true one.
+      {"estimate_ms", estimator.frames() > 0 ? number_or_null(estimator.readoutS() * 1e3)
+                                             : nlohmann::json(nullptr)},
+      {"sigma_ms", number_or_null(estimator.sigmaS() * 1e3)},
+      {"frames", estimator.frames()}};
+}
+
 }  // namespace
 
 void StatsSink::consume(const RgbdFrame&, const FrameResult& result) {
@@ -188,6 +218,7 @@ void StatsSink::finish(const RunEnd& end) {
       {"heap_mb", heap_mb_},  // [processed frames, MiB malloc'd and not freed], same samples
       {"keyframes_in_memory", KeyFrame::instances()}};
   stats["segmentation_arrivals"] = arrivals_;
+  stats["rolling_shutter"] = rollingShutterJson(slam);
   stats["dynamics"] =
       dynamicsJson(dynamics_, end.system.segmenterName(), end.system.segmenterName() != "off");
   if (end.audio) addAudioJson(*end.audio, stats);

@@ -12,6 +12,7 @@
 #include "core/se3.hpp"
 #include "slam/features.hpp"
 #include "slam/map_point.hpp"
+#include "slam/rolling_shutter.hpp"
 #include "slam/vocabulary/bow_vector.hpp"
 
 namespace dynanav {
@@ -53,6 +54,15 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   SE3 T_camera_parent = SE3::Identity();
   std::set<KeyFrame*, KeyFrameIdLess> children;
   bool bad = false;
+
+  /// Issue 18: the camera's motion over the frame interval when this keyframe was taken
+  /// (interval 0: not known yet) and the readout its keypoints were re-timed with. A wrong readout
+  /// shifts the map points it creates along that motion; the readout estimate models the shift.
+  CameraVelocity motion;
+  double readout_used_s = 0.0;
+  /// How this keyframe's fitted pose moved per second of readout error, (rho, phi) on the left
+  /// (ReadoutEvidence::pose_shift_per_s): its map points moved with it.
+  Eigen::Matrix<double, 6, 1> pose_shift_per_readout = Eigen::Matrix<double, 6, 1>::Zero();
 
   // Place recognition (issue 4, loop/relocalisation): bag of words and direct index, computed
   // once when the keyframe enters the keyframe database; loop edges join the two keyframes of a

@@ -64,6 +64,22 @@ class SlamSystem {
   [[nodiscard]] LocalMapperStats mappingStats() const;
   [[nodiscard]] size_t numMapPoints() const;
   [[nodiscard]] size_t numKeyFrames() const;
+  /// Issue 18: the rolling-shutter readout estimated from the tracking residuals (the current
+  /// stage's when online), the online stages, and the readout configured (tracking key, else the
+  /// camera's).
+  [[nodiscard]] const ReadoutEstimator& readoutEstimator() const {
+    return tracker_->readoutEstimator();
+  }
+  [[nodiscard]] const std::vector<ReadoutStage>& onlineReadoutStages() const {
+    return tracker_->onlineReadoutStages();
+  }
+  [[nodiscard]] double onlineReadoutS() const { return tracker_->onlineReadoutS(); }
+  [[nodiscard]] bool readoutOnline() const { return config_.tracking.rolling_shutter_online; }
+  [[nodiscard]] double configuredReadoutS() const {
+    return config_.tracking.rolling_shutter_readout_ms >= 0.0
+               ? config_.tracking.rolling_shutter_readout_ms * 1e-3
+               : camera_->readout_s;
+  }
   /// Loops closed so far (issue 4); empty when loop closing is off or has no vocabulary.
   [[nodiscard]] std::vector<LoopEvent> loops() const;
 

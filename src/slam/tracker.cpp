@@ -41,6 +41,7 @@ bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
   local_.reference = kf;
   last_keyframe_frame_id_ = frame.id;
   outcome.new_keyframe = kf;
+  awaiting_motion_ = kf;
   outcome.reference = kf;
   outcome.inliers = with_depth;
   return true;
@@ -93,6 +94,25 @@ void Tracker::rememberAsLast(const Frame& frame) {
   T_last_reference_ = frame.T_camera_world * reference_->T_world_camera();
 }
 
+double Tracker::readoutFor(const Frame& frame) {
+  const double configured_s = config_.rolling_shutter_readout_ms >= 0.0
+                                  ? config_.rolling_shutter_readout_ms * 1e-3
+                                  : frame.features.camera->readout_s;
+  if (!config_.rolling_shutter_online) return configured_s;
+  // Online: evidence gathered while re-timing with R0 reads R0 + g (R - R0), g < 1, unbiased
+  // only at R0 = R (slam/readout_estimate.hpp); each settled stage moves R0 to its estimate and
+  // starts a new one, a fixed-point iteration towards the true readout.
+  const double settled_sigma_s = config_.rolling_shutter_online_max_sigma_ms * 1e-3;
+  if (has_velocity_ && readout_estimator_.sigmaS() <= settled_sigma_s) {
+    // A readout longer than the frame interval would overlap the next frame's.
+    online_readout_s_ = std::clamp(readout_estimator_.readoutS(), 0.0, velocity_interval_s_);
+    online_stages_.push_back({int64_t(frame.id), readout_estimator_.readoutS(),
+                              readout_estimator_.sigmaS(), readout_estimator_.frames()});
+    readout_estimator_.restart();
+  }
+  return online_stages_.empty() ? configured_s : online_readout_s_;
+}
+
 TrackOutcome Tracker::track(Frame& frame) {
   InitialPose initial = initialPose(frame);
   if (initial.finished) return initial.outcome;
@@ -120,12 +140,10 @@ InitialPose Tracker::initialPose(Frame& frame) {
   }
   initial.was_lost = state_ == TrackingState::kLost;
   bool ok = false;
-  initial.readout_s = config_.rolling_shutter_readout_ms >= 0.0
-                          ? config_.rolling_shutter_readout_ms * 1e-3
-                          : frame.features.camera->readout_s;
+  initial.readout_s = readoutFor(frame);
   initial.retime = !initial.was_lost && has_velocity_ && initial.readout_s > 0.0;
+  initial.as_read = KeypointMeasurements::of(frame.features);
   if (initial.retime) {
-    initial.as_read = KeypointMeasurements::of(frame.features);
     compensateRollingShutter(frame.features, CameraVelocity::of(velocity_, velocity_interval_s_),
                              initial.readout_s);
   }
@@ -170,6 +188,19 @@ TrackOutcome Tracker::trackLocalMap(Frame& frame, InitialPose initial) {
   }
   if (initial.retime)
     outcome.inliers = retimeWithOwnMotion(frame, initial.as_read, initial.readout_s);
+  const double readout_used_s = initial.retime ? initial.readout_s : 0.0;
+  CameraVelocity own_motion;  // interval 0: not known
+  ReadoutEvidence evidence;
+  if (!was_lost && frame.stamp_s > last_.stamp_s) {
+    own_motion = CameraVelocity::of(
+        orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse()),
+        frame.stamp_s - last_.stamp_s);
+    // The map's first keyframe had no motion yet: the next interval's stands in for it.
+    if (awaiting_motion_) awaiting_motion_->motion = own_motion;
+    awaiting_motion_.reset();
+    evidence = readoutEvidence(frame, initial.as_read, own_motion, readout_used_s);
+    readout_estimator_.add(evidence);
+  }
   state_ = TrackingState::kOk;
   outcome.recovered = was_lost;
   if (!was_lost) {
@@ -194,6 +225,9 @@ TrackOutcome Tracker::trackLocalMap(Frame& frame, InitialPose initial) {
   last_is_keyframe_ = false;
   if (!was_lost && needNewKeyFrame(frame, *reference_, decision, config_)) {
     outcome.new_keyframe = createKeyFrame(frame, map_, config_);
+    outcome.new_keyframe->motion = own_motion;
+    outcome.new_keyframe->readout_used_s = readout_used_s;
+    if (evidence.valid) outcome.new_keyframe->pose_shift_per_readout = evidence.pose_shift_per_s;
     reference_ = outcome.new_keyframe;
     last_keyframe_frame_id_ = frame.id;
     last_is_keyframe_ = true;

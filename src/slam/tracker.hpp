@@ -11,6 +11,7 @@
 #include "slam/frame.hpp"
 #include "slam/local_map.hpp"
 #include "slam/map.hpp"
+#include "slam/readout_estimate.hpp"
 #include "slam/mapping_stage.hpp"
 #include "slam/relocaliser.hpp"
 #include "slam/rolling_shutter.hpp"
@@ -32,7 +33,8 @@ struct InitialPose {
   bool was_lost = false;
   bool retime = false;  ///< keypoints were re-timed for the rolling shutter with the prediction
   double readout_s = 0.0;
-  KeypointMeasurements as_read;  ///< the keypoints before re-timing (to re-time with own motion)
+  /// The keypoints before re-timing (to re-time with own motion, and for the readout estimate).
+  KeypointMeasurements as_read;
   /// The camera's motion from the last frame to this initial pose (interval 0: not known, e.g.
   /// after a loss); dynamics widens its depth test with it.
   CameraVelocity motion_since_last;
@@ -58,6 +60,15 @@ class Tracker {
   /// retry the last reference keyframe).
   void setRelocaliser(const Relocaliser* relocaliser) { relocaliser_ = relocaliser; }
   [[nodiscard]] const LocalMap& localMap() const { return local_; }
+  /// Issue 18: the rolling-shutter readout estimated from the tracking residuals so far.
+  [[nodiscard]] const ReadoutEstimator& readoutEstimator() const { return readout_estimator_; }
+  /// Stages of the online readout iteration (tracking.rolling_shutter_online): each settled
+  /// estimate, adopted from `frame` on.
+  [[nodiscard]] const std::vector<ReadoutStage>& onlineReadoutStages() const {
+    return online_stages_;
+  }
+  /// The readout re-timing uses after the last stage (clamped to [0, frame interval]).
+  [[nodiscard]] double onlineReadoutS() const { return online_readout_s_; }
 
  private:
   bool initialise(Frame& frame, TrackOutcome& outcome);
@@ -69,6 +80,9 @@ class Tracker {
   /// and re-optimises its pose; returns the local-map inliers left.
   int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read,
                           double readout_s) const;
+  /// The readout to re-time this frame with: the configured or camera's value, or the online
+  /// estimate once it has settled (tracking.rolling_shutter_online).
+  double readoutFor(const Frame& frame);
 
   Map& map_;
   MappingStage& mapping_;
@@ -85,6 +99,10 @@ class Tracker {
   LocalMap local_;
   uint64_t last_keyframe_frame_id_ = 0;
   const Relocaliser* relocaliser_ = nullptr;
+  ReadoutEstimator readout_estimator_;
+  KeyFramePtr awaiting_motion_;  ///< the map's first keyframe until the next frame gives a motion
+  std::vector<ReadoutStage> online_stages_;
+  double online_readout_s_ = 0.0;
 };
 
 }  // namespace dynanav

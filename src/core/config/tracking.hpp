@@ -30,6 +30,8 @@ struct TrackingConfig {
   int keyframe_close_untracked_max = 70;
   int new_points_min = 100;
   double rolling_shutter_readout_ms = -1.0;
+  bool rolling_shutter_online = false;
+  double rolling_shutter_online_max_sigma_ms = 1.0;
   template <class V>
   void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored",
@@ -76,6 +78,12 @@ struct TrackingConfig {
       "colour camera's rolling-shutter readout time (ms) for keypoint re-timing; -1 = the "
       "camera's own (camera.yaml / built-in calibration), 0 = treat as global shutter",
       Range{-1, 1000});
+    v("rolling_shutter_online", rolling_shutter_online,
+      "re-time keypoints with the readout estimated online from the tracking residuals "
+      "(stats.json rolling_shutter) instead of rolling_shutter_readout_ms, once it is settled");
+    v("rolling_shutter_online_max_sigma_ms", rolling_shutter_online_max_sigma_ms,
+      "the online readout estimate is used once its standard error (ms) is below this",
+      Range{0, 100, Range::kOpenLow});
   }
 };
 
