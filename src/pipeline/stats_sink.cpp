@@ -2,8 +2,8 @@
 // and the stage timers; no module builds JSON of its own.
 #include <malloc.h>
 
-#include <cmath>
 #include <sys/resource.h>
+#include <cmath>
 
 #include "io/json_io.hpp"
 #include "pipeline/sinks.hpp"
@@ -133,19 +133,18 @@ nlohmann::json rollingShutterJson(const SlamSystem& slam) {
                       {"sigma_ms", stage.sigma_s * 1e3},
                       {"frames", stage.frames}});
   const auto& all = slam.onlineReadoutStages();
-  return {
-      {"configured_ms", slam.configuredReadoutS() * 1e3},
-      {"online", slam.readoutOnline()},
-      // Online: the readout re-timing used last (null before the first stage settled).
-      {"online_readout_ms",
-       all.empty() ? nlohmann::json(nullptr) : nlohmann::json(slam.onlineReadoutS() * 1e3)},
-      {"online_stages", stages},
-      // The evidence since the last stage (the whole run when not online), linearised at the
-      // readout in use: unbiased only when that is the true one.
-      {"estimate_ms", estimator.frames() > 0 ? number_or_null(estimator.readoutS() * 1e3)
-                                             : nlohmann::json(nullptr)},
-      {"sigma_ms", number_or_null(estimator.sigmaS() * 1e3)},
-      {"frames", estimator.frames()}};
+  return {{"configured_ms", slam.configuredReadoutS() * 1e3},
+          {"online", slam.readoutOnline()},
+          // Online: the readout re-timing used last (null before the first stage settled).
+          {"online_readout_ms",
+           all.empty() ? nlohmann::json(nullptr) : nlohmann::json(slam.onlineReadoutS() * 1e3)},
+          {"online_stages", stages},
+          // The evidence since the last stage (the whole run when not online), linearised at the
+          // readout in use: unbiased only when that is the true one.
+          {"estimate_ms", estimator.frames() > 0 ? number_or_null(estimator.readoutS() * 1e3)
+                                                 : nlohmann::json(nullptr)},
+          {"sigma_ms", number_or_null(estimator.sigmaS() * 1e3)},
+          {"frames", estimator.frames()}};
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ Eigen::Matrix<double, 3, 3> projectionJacobian(const PinholeCamera& camera, cons
   const double inv_z = 1.0 / p.z();
   Eigen::Matrix<double, 3, 3> J;
   J << camera.fx * inv_z, 0.0, -camera.fx * p.x() * inv_z * inv_z,  //
-      0.0, camera.fy * inv_z, -camera.fy * p.y() * inv_z * inv_z,    //
+      0.0, camera.fy * inv_z, -camera.fy * p.y() * inv_z * inv_z,   //
       camera.fx * inv_z, 0.0, -camera.fx * p.x() * inv_z * inv_z + camera.bf() * inv_z * inv_z;
   return J;
 }
@@ -125,7 +125,8 @@ ReadoutEvidence readoutEvidence(const Frame& frame, const KeypointMeasurements& 
   evidence.readout_s = gradient / information;
   evidence.pose_shift_per_s = pose.solve(coupling);
   // A frame whose estimate leaves [-1, 2] frame intervals has a wrong velocity or matches.
-  evidence.valid = std::abs(evidence.readout_s - 0.5 * motion.interval_s) <= 1.5 * motion.interval_s;
+  evidence.valid =
+      std::abs(evidence.readout_s - 0.5 * motion.interval_s) <= 1.5 * motion.interval_s;
   return evidence;
 }
 
@@ -152,6 +153,5 @@ double ReadoutEstimator::sigmaS() const {
   const double effective_frames = sum_w_ * sum_w_ / sum_w2_;
   return std::sqrt(scatter / effective_frames);
 }
-
 
 }  // namespace dynanav

@@ -25,9 +25,10 @@
 // Per frame: linearise the residuals of the matched inliers in (pose, readout) at the readout the
 // pose was fitted with, weight them as pose optimisation does (pyramid level, Huber), and
 // marginalise the pose (Schur complement), so whatever a pose change can explain is not counted
-// as readout. Points seen by a keyframe whose motion is not known are left out. The frame gives a readout and its information; frames are pooled by information
-// (a still camera gives ~none). The standard error comes from the frames' scatter, not from the
-// pixel noise model, because the velocity and the matches carry errors of their own.
+// as readout. Points seen by a keyframe whose motion is not known are left out. The frame gives a
+// readout and its information; frames are pooled by information (a still camera gives ~none). The
+// standard error comes from the frames' scatter, not from the pixel noise model, because the
+// velocity and the matches carry errors of their own.
 #include <cstdint>
 #include <vector>
 
@@ -41,9 +42,9 @@ namespace dynanav {
 /// One frame's measurement of the readout.
 struct ReadoutEvidence {
   bool valid = false;
-  double readout_s = 0.0;          ///< the frame's own estimate (any sign: noise may cross 0)
-  double information_per_s2 = 0.0; ///< 1 / variance under the pixel noise model (px^-2 s^-2)
-  int points = 0;                  ///< inlier matches used
+  double readout_s = 0.0;           ///< the frame's own estimate (any sign: noise may cross 0)
+  double information_per_s2 = 0.0;  ///< 1 / variance under the pixel noise model (px^-2 s^-2)
+  int points = 0;                   ///< inlier matches used
   /// How the frame's fitted pose moves per second of readout error (H_pose^-1 H_pose,readout):
   /// a keyframe keeps it, because the points it creates move with its pose.
   Eigen::Matrix<double, 6, 1> pose_shift_per_s = Eigen::Matrix<double, 6, 1>::Zero();

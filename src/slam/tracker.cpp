@@ -192,9 +192,9 @@ TrackOutcome Tracker::trackLocalMap(Frame& frame, InitialPose initial) {
   CameraVelocity own_motion;  // interval 0: not known
   ReadoutEvidence evidence;
   if (!was_lost && frame.stamp_s > last_.stamp_s) {
-    own_motion = CameraVelocity::of(
-        orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse()),
-        frame.stamp_s - last_.stamp_s);
+    own_motion =
+        CameraVelocity::of(orthonormalized(frame.T_camera_world * last_.T_camera_world.inverse()),
+                           frame.stamp_s - last_.stamp_s);
     // The map's first keyframe had no motion yet: the next interval's stands in for it.
     if (awaiting_motion_) awaiting_motion_->motion = own_motion;
     awaiting_motion_.reset();

@@ -11,8 +11,8 @@
 #include "slam/frame.hpp"
 #include "slam/local_map.hpp"
 #include "slam/map.hpp"
-#include "slam/readout_estimate.hpp"
 #include "slam/mapping_stage.hpp"
+#include "slam/readout_estimate.hpp"
 #include "slam/relocaliser.hpp"
 #include "slam/rolling_shutter.hpp"
 

@@ -79,10 +79,9 @@ Scene makeScene(const SE3& T_camera_world, const CameraVelocity& velocity, doubl
     const Eigen::Vector2d uv = camera->project(p_row);
     // The creator saw the point row by row too, and re-timed it with its readout.
     const Vec3 p_creator_mid = creator.T_camera_world * p_world;
-    const Vec3 p_creator_row =
-        creator.motion.interval_s > 0.0
-            ? seenByRow(*camera, creator.motion, readout_s, p_creator_mid)
-            : p_creator_mid;
+    const Vec3 p_creator_row = creator.motion.interval_s > 0.0
+                                   ? seenByRow(*camera, creator.motion, readout_s, p_creator_mid)
+                                   : p_creator_mid;
     const Eigen::Vector2d uv_creator = camera->project(p_creator_row);
     if (!camera->inImage(uv.x(), uv.y(), 1.0) ||
         !camera->inImage(uv_creator.x(), uv_creator.y(), 1.0))
@@ -107,18 +106,19 @@ Scene makeScene(const SE3& T_camera_world, const CameraVelocity& velocity, doubl
   for (size_t i = 0; i < map_world.size(); ++i)
     points.push_back(std::make_shared<MapPoint>(i, map_world[i], nullptr));
   Scene scene{Frame(1, 0.0, std::move(f)),
-              std::make_shared<KeyFrame>(0, 0, 0.0, std::move(kf_features),
-                                         creator.T_camera_world, points)};
+              std::make_shared<KeyFrame>(0, 0, 0.0, std::move(kf_features), creator.T_camera_world,
+                                         points)};
   scene.keyframe->motion = creator.motion;
   scene.keyframe->readout_used_s = creator.readout_used_s;
-  for (size_t i = 0; i < points.size(); ++i) points[i]->addObservation(scene.keyframe.get(), int(i));
+  for (size_t i = 0; i < points.size(); ++i)
+    points[i]->addObservation(scene.keyframe.get(), int(i));
   scene.frame.T_camera_world = T_camera_world;
   scene.frame.map_points = points;
   return scene;
 }
 
-const SE3 kPose = makeSE3(Quat(Eigen::AngleAxisd(0.3, Vec3(0.2, 1.0, 0.1).normalized())),
-                          Vec3(0.4, -0.2, 1.5));
+const SE3 kPose =
+    makeSE3(Quat(Eigen::AngleAxisd(0.3, Vec3(0.2, 1.0, 0.1).normalized())), Vec3(0.4, -0.2, 1.5));
 // A brisk head turn: 100 deg/s yaw, 30 deg/s pitch, walking 1 m/s.
 const CameraVelocity kTurning = makeVelocity(Vec3(0.0175, 0.058, 0.0), Vec3(0.01, 0.0, -0.03));
 // A keyframe that stood still where the frame is: its map points are exact.
@@ -142,8 +142,8 @@ TEST(ReadoutEstimate, LinearisingAtTheReadoutUsedGivesTheSameAnswer) {
   // linearised there and must point back to the truth from either side.
   const Scene scene = makeScene(kPose, kTurning, 0.025, 0.0, 4, kStillCreator);
   for (const double used_s : {0.0, 0.015, 0.025, 0.033}) {
-    const ReadoutEvidence e =
-        readoutEvidence(scene.frame, KeypointMeasurements::of(scene.frame.features), kTurning, used_s);
+    const ReadoutEvidence e = readoutEvidence(
+        scene.frame, KeypointMeasurements::of(scene.frame.features), kTurning, used_s);
     ASSERT_TRUE(e.valid);
     EXPECT_NEAR(e.readout_s, 0.025, 0.001) << used_s;
   }
@@ -159,16 +159,16 @@ TEST(ReadoutEstimate, AMapShiftedByTheShutterIsModelled) {
     const KeyFrameView creator{T_keyframe, kTurning, keyframe_used_s};
     const Scene scene = makeScene(kPose, kTurning, 0.025, 0.0, 8, creator);
     for (const double used_s : {0.0, 0.025}) {
-      const ReadoutEvidence e =
-          readoutEvidence(scene.frame, KeypointMeasurements::of(scene.frame.features), kTurning, used_s);
+      const ReadoutEvidence e = readoutEvidence(
+          scene.frame, KeypointMeasurements::of(scene.frame.features), kTurning, used_s);
       ASSERT_TRUE(e.valid);
       EXPECT_NEAR(e.readout_s, 0.025, 0.0015) << keyframe_used_s << " " << used_s;
     }
   }
   // A keyframe whose motion is not known cannot be modelled: its points give no evidence.
   const Scene unknown = makeScene(kPose, kTurning, 0.025, 0.0, 9, {T_keyframe, {}, 0.0});
-  const ReadoutEvidence e =
-      readoutEvidence(unknown.frame, KeypointMeasurements::of(unknown.frame.features), kTurning, 0.0);
+  const ReadoutEvidence e = readoutEvidence(
+      unknown.frame, KeypointMeasurements::of(unknown.frame.features), kTurning, 0.0);
   EXPECT_FALSE(e.valid);
   EXPECT_EQ(e.points, 0);
 }
@@ -190,23 +190,28 @@ TEST(ReadoutEstimate, AStillCameraGivesNoUsableEvidence) {
   const CameraVelocity still = makeVelocity(Vec3::Zero(), Vec3::Zero());
   const Scene scene = makeScene(kPose, still, 0.025, 0.5, 6, kStillCreator);
   const Frame& frame = scene.frame;
-  const ReadoutEvidence e = readoutEvidence(frame, KeypointMeasurements::of(frame.features), still, 0.0);
+  const ReadoutEvidence e =
+      readoutEvidence(frame, KeypointMeasurements::of(frame.features), still, 0.0);
   EXPECT_LT(e.information_per_s2, ReadoutEstimator::kMinInformationPerS2);
   ReadoutEstimator estimator;
   estimator.add(e);
   EXPECT_EQ(estimator.frames(), 0);
   // No motion known (after a loss): no evidence at all.
-  EXPECT_FALSE(readoutEvidence(frame, KeypointMeasurements::of(frame.features), CameraVelocity{}, 0.0).valid);
+  EXPECT_FALSE(
+      readoutEvidence(frame, KeypointMeasurements::of(frame.features), CameraVelocity{}, 0.0)
+          .valid);
 }
 
 TEST(ReadoutEstimate, OutliersAndFewMatchesAreLeftOut) {
   Scene scene = makeScene(kPose, kTurning, 0.025, 0.0, 7, kStillCreator);
   Frame& frame = scene.frame;
   for (int i = 0; i < frame.size(); ++i) frame.outlier[i] = i % 3 == 0 ? 0 : 1;
-  const ReadoutEvidence e = readoutEvidence(frame, KeypointMeasurements::of(frame.features), kTurning, 0.0);
+  const ReadoutEvidence e =
+      readoutEvidence(frame, KeypointMeasurements::of(frame.features), kTurning, 0.0);
   EXPECT_EQ(e.points, 100);
   for (int i = 0; i < frame.size(); ++i) frame.outlier[i] = i >= ReadoutEstimator::kMinPoints - 1;
-  EXPECT_FALSE(readoutEvidence(frame, KeypointMeasurements::of(frame.features), kTurning, 0.0).valid);
+  EXPECT_FALSE(
+      readoutEvidence(frame, KeypointMeasurements::of(frame.features), kTurning, 0.0).valid);
 }
 
 TEST(ReadoutEstimate, NoisyFramesPoolToTheTruthWithAnHonestSigma) {
@@ -216,7 +221,8 @@ TEST(ReadoutEstimate, NoisyFramesPoolToTheTruthWithAnHonestSigma) {
   for (int k = 0; k < 60; ++k) {
     const CameraVelocity v = makeVelocity(Vec3(0.3 * yaw(rng), yaw(rng), 0.0), Vec3::Zero());
     const Scene scene = makeScene(kPose, v, 0.025, 1.0, 100 + k, kStillCreator);
-    estimator.add(readoutEvidence(scene.frame, KeypointMeasurements::of(scene.frame.features), v, 0.0));
+    estimator.add(
+        readoutEvidence(scene.frame, KeypointMeasurements::of(scene.frame.features), v, 0.0));
     if (estimator.frames() < ReadoutEstimator::kMinFrames)
       EXPECT_TRUE(std::isinf(estimator.sigmaS()));
   }
