@@ -10,30 +10,13 @@
 #include "core/config.hpp"
 #include "slam/keyframe.hpp"
 #include "slam/readout_estimate.hpp"
+#include "test_rolling_shutter_motion.hpp"
 
 namespace dynanav {
 namespace {
 
-constexpr double kInterval = 1.0 / 30.0;
-
-CameraVelocity makeVelocity(const Vec3& omega_per_frame, const Vec3& t_per_frame) {
-  SE3 T_current_last = SE3::Identity();
-  T_current_last.linear() = expSO3(omega_per_frame);
-  T_current_last.translation() = t_per_frame;
-  return CameraVelocity::of(T_current_last, kInterval);
-}
-
-/// Where a camera with readout `readout_s` sees p_mid (middle-row camera frame): the row and the
-/// pose depend on each other, so iterate to the fixed point.
-Vec3 seenByRow(const PinholeCamera& camera, const CameraVelocity& velocity, double readout_s,
-               const Vec3& p_mid) {
-  Vec3 p_row = p_mid;
-  for (int k = 0; k < 20; ++k) {
-    const double row = camera.project(p_row).y();
-    p_row = motionOver(velocity, (row / camera.height - 0.5) * readout_s) * p_mid;
-  }
-  return p_row;
-}
+using testing::makeVelocity;
+using testing::seenByRow;
 
 /// The keyframe that created the map points: where it was, how it moved, the readout it re-timed
 /// its keypoints with. Its view of the points decides where the map puts them.

@@ -5,29 +5,18 @@
 #include <random>
 
 #include "slam/rolling_shutter.hpp"
+#include "test_rolling_shutter_motion.hpp"
 
 namespace dynanav {
 namespace {
 
 constexpr double kReadout = 0.020;
-constexpr double kInterval = 1.0 / 30.0;
 
-CameraVelocity makeVelocity(const Vec3& omega_per_frame, const Vec3& t_per_frame) {
-  SE3 T_current_last = SE3::Identity();
-  T_current_last.linear() = expSO3(omega_per_frame);
-  T_current_last.translation() = t_per_frame;
-  return CameraVelocity::of(T_current_last, kInterval);
-}
+using testing::makeVelocity;
 
-/// Where a rolling-shutter camera sees p_mid (a point in the middle-row camera frame): the row
-/// and the pose depend on each other, so iterate to the fixed point.
+/// Where the kReadout camera sees p_mid.
 Vec3 seenByRow(const PinholeCamera& camera, const CameraVelocity& velocity, const Vec3& p_mid) {
-  Vec3 p_row = p_mid;
-  for (int k = 0; k < 20; ++k) {
-    const double row = camera.project(p_row).y();
-    p_row = motionOver(velocity, (row / camera.height - 0.5) * kReadout) * p_mid;
-  }
-  return p_row;
+  return testing::seenByRow(camera, velocity, kReadout, p_mid);
 }
 
 struct Scene {
