@@ -100,8 +100,10 @@ MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predi
       check.predicted_sigma_m = static_cast<float>(
           mapPointDepthSigma(check.predicted_depth_m, f.scales->scale[octave], f.camera->bf()));
     }
+    const double row_offset_s =
+        f.camera ? std::abs(f.keypoints[i].pt.y / f.camera->height - 0.5) * motion.readout_s : 0.0;
     const double radius_px = motionDisplacementPx(motion.velocity, check.measured_depth_m, focal_px,
-                                                  motion.time_spread_s);
+                                                  motion.time_spread_s + row_offset_s);
     const int radius = std::min(config.depth_test_max_radius_px, int(std::lround(radius_px)));
     if (radius <= 0 || motion.depth_m.empty()) continue;
     const DepthRange nearby = depthRangeAround(motion.depth_m, f.keypoints[i].pt, radius);

@@ -45,6 +45,10 @@ struct DepthTestMotion {
   cv::Mat depth_m;             ///< the frame's depth image (CV_32F metres); empty: own depth only
   CameraVelocity velocity;     ///< the camera's motion since the last frame (interval 0: unknown)
   double time_spread_s = 0.0;  ///< depthTestTimeSpread() of the frame
+  /// Colour rolling-shutter readout in use (s): a keypoint in row v was seen |v/H - 1/2| readouts
+  /// away from the middle row's instant, which the depth image is taken at (as in the simulator;
+  /// an unknown depth timing is not narrower), so its search widens by that much time.
+  double readout_s = 0.0;
 };
 
 /// The depth-difference test on `frame` at its initial pose: `predicted_depth_m` = depth of each

@@ -120,7 +120,8 @@ void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Fr
   const double exposure_s =
       camera_.exposure_s > 0.0 ? camera_.exposure_s : config_.dynamics.assumed_exposure_ms * 1e-3;
   const DepthTestMotion motion{input.depth_m, initial.motion_since_last,
-                               depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s)};
+                               depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s),
+                               initial.retime ? initial.readout_s : 0.0};
   const MoverVerdict verdict =
       findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics, motion);
   record.culled_points += slam_->applyDrop(frame, verdict.drop);

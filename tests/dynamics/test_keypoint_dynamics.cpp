@@ -190,3 +190,26 @@ TEST(KeypointDynamics, TurningCameraWidensTheDepthTestOnlyAsFarAsItMoved) {
   c.depth_test_max_radius_px = 2;
   EXPECT_EQ(findDepthMovers(frame, predicted, c, motion).drop.drop, (std::vector<int>{0, 1}));
 }
+
+TEST(KeypointDynamics, RollingShutterWidensTheDepthTestByTheKeypointsRowTime) {
+  // The same cupboard corner found 3 px onto the wall, once in the top row (read ~12 ms before
+  // the middle row, when a 25 ms readout runs over 120 rows) and once in the middle row (read at
+  // the depth image's instant). No exposure: only the row's time widens the search.
+  cv::Mat depth(120, 160, CV_32F, cv::Scalar(4.0f));
+  depth.colRange(0, 80).setTo(1.5f);
+  Frame frame = frameWith({{83, 2}, {83, 60}}, {1.5f, 1.5f}, {4.0f, 4.0f});
+  auto camera = std::make_shared<PinholeCamera>();  // f = 525 px
+  camera->height = 120;
+  frame.features.camera = camera;
+  DynamicsConfig c;
+  DepthTestMotion motion;
+  motion.depth_m = depth;
+  motion.velocity.interval_s = 1.0 / 30.0;
+  motion.velocity.omega = Vec3(0, 150.0 * 3.14159265 / 180.0 / 30.0, 0);
+  const std::vector<float> predicted = predictedMapPointDepths(frame);
+  // Global shutter: neither keypoint had time to be misregistered.
+  EXPECT_EQ(findDepthMovers(frame, predicted, c, motion).drop.drop, (std::vector<int>{0, 1}));
+  // 25 ms readout: the top row's 12 ms at 150 deg/s is ~16 px, which reaches the cupboard.
+  motion.readout_s = 0.025;
+  EXPECT_EQ(findDepthMovers(frame, predicted, c, motion).drop.drop, (std::vector<int>{1}));
+}
