@@ -34,7 +34,7 @@ estimate() {  # estimate RUN_DIR -> "estimate_ms sigma_ms frames online_ms stage
   echo "$(r2 "$e") $(r2 "$s") $f $(r2 "$o") $n"
 }
 echo "| scene | seed | true readout (ms) | estimate while re-timing with 0 (ms) ± | estimate while re-timing with the truth (ms) ± | online: readout used at the end (ms), stages | ATE re-timing with 0 (m) | ATE online (m) | ATE true readout (m) |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "|---|---|---|---|---|---|---|---|---|"
 for scene in ${SCENES:-static-room head-turns}; do
   for seed in ${SEEDS:-1 2 3}; do
     for readout in ${READOUTS:-0 25}; do
