@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "eval/moving_flags.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "io/json_io.hpp"
 #include "io/sequence.hpp"
 
 namespace dynanav::cli {
@@ -22,6 +23,7 @@ struct EvalOptions {
   std::string stats_path;     // a run's stats.json: score its moving flags (simulated sequences)
   int min_visible_px = 3072;  // 1 % of a 640x480 image
   bool json = false;
+  std::string errors_path;  // CSV of each matched pose's aligned ATE error (issue 18's plot)
 };
 
 nlohmann::json toJson(const ErrorStats& s) {
@@ -83,6 +85,12 @@ int runEval(const EvalOptions& opt) {
     rpe = computeRpe(gt, est);
   } catch (const InputError& e) {
     throw InputError("--gt " + opt.gt_path + " --est " + opt.est_path, e.what());
+  }
+  if (!opt.errors_path.empty()) {
+    std::string csv = "stamp_s,ate_error_m\n";
+    for (const auto& [stamp_s, error_m] : ate.error_by_stamp_m)
+      csv += fmt::format("{:.6f},{:.6f}\n", stamp_s, error_m);
+    writeTextFile(opt.errors_path, csv);
   }
   // A gap of more than 3 median frame intervals in the estimate is time not covered.
   std::vector<double> gaps;
@@ -160,6 +168,9 @@ void registerEval(CLI::App& root, Action& chosen) {
       ->check(finiteRange(0, 1e8))
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "print the results as JSON");
+  sub->add_option("--errors", opt->errors_path,
+                  "write each matched pose's aligned ATE error to this CSV (stamp_s,ate_error_m; "
+                  "scripts/plot_errors.py draws it)");
   sub->callback([opt, &chosen] { chosen = [opt] { return runEval(*opt); }; });
 }
 

@@ -124,7 +124,11 @@ AteResult computeAte(const std::vector<StampedPose>& gt, const std::vector<Stamp
   }
   result.T_gt_est = alignRigid(model, data);
   std::vector<double> errors;
-  for (size_t k = 0; k < model.size(); ++k) errors.push_back((result.T_gt_est * model[k] - data[k]).norm());
+  for (size_t k = 0; k < model.size(); ++k) {
+    errors.push_back((result.T_gt_est * model[k] - data[k]).norm());
+    result.error_by_stamp_m.emplace_back(est[matches[k].second].stamp_s, errors.back());
+  }
+  std::sort(result.error_by_stamp_m.begin(), result.error_by_stamp_m.end());
   result.translation_m = errorStats(errors);
   return result;
 }

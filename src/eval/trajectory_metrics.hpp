@@ -24,6 +24,8 @@ struct AteResult {
   SE3 T_gt_est = SE3::Identity();  ///< alignment applied to the estimate
   size_t matched = 0;              ///< estimated poses with a ground-truth pose within max_dt
   size_t estimated = 0;
+  /// Per matched pose, in time order: (the estimate's stamp in s, its aligned error in m).
+  std::vector<std::pair<double, double>> error_by_stamp_m;
 };
 
 struct RpeResult {

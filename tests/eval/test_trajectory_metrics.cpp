@@ -56,6 +56,12 @@ TEST(Ate, BalancedOffsetGivesExactlyTheOffset) {
   EXPECT_NEAR(r.translation_m.rmse, 0.01, 1e-9);
   EXPECT_NEAR(r.translation_m.max, 0.01, 1e-9);
   EXPECT_NEAR(r.translation_m.min, 0.01, 1e-9);
+  // Each matched pose's error, in time order, with the estimate's stamp.
+  ASSERT_EQ(r.error_by_stamp_m.size(), est.size());
+  for (size_t i = 0; i < est.size(); ++i) {
+    EXPECT_EQ(r.error_by_stamp_m[i].first, est[i].stamp_s);
+    EXPECT_NEAR(r.error_by_stamp_m[i].second, 0.01, 1e-9);
+  }
 }
 
 TEST(Rpe, OneDegreePerFrameRotationError) {
@@ -95,7 +101,8 @@ TEST(Rpe, PairsSpanDroppedFramesAndSkipFarGroundTruth) {
 TEST(Ate, DroppedFramesAndTimeOffsets) {
   const auto gt = groundTruth(300);
   std::vector<StampedPose> est;
-  for (size_t i = 0; i < gt.size(); i += 3) est.push_back({gt[i].stamp_s + 0.004, gt[i].T_world_camera});
+  for (size_t i = 0; i < gt.size(); i += 3)
+    est.push_back({gt[i].stamp_s + 0.004, gt[i].T_world_camera});
   const AteResult r = computeAte(gt, est);
   EXPECT_EQ(r.matched, est.size());
   EXPECT_LT(r.translation_m.rmse, 1e-9);

@@ -37,16 +37,42 @@ TEST(EvalCli, PrintsAteRpeAndCoverage) {
   const auto json = nlohmann::json::parse(out);
   EXPECT_NEAR(json["ate_m"]["rmse"].get<double>(), 0.002, 2e-4);
   EXPECT_EQ(json["matched_poses"].get<int>(), 120);
+  // --errors: one CSV line per matched pose after the header.
+  ASSERT_EQ(test::runCli("eval --gt " + gt.string() + " --est " + est.string() + " --errors " +
+                             (dir / "errors.csv").string(),
+                         &out),
+            0)
+      << out;
+  std::ifstream csv(dir / "errors.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line, "stamp_s,ate_error_m");
+  int lines = 0;
+  while (std::getline(csv, line)) {
+    ++lines;
+    EXPECT_NEAR(std::stod(line.substr(line.find(',') + 1)), 0.002, 5e-4) << line;
+  }
+  EXPECT_EQ(lines, 120);
+  // An output path in a folder that does not exist: exit 2 naming it.
+  EXPECT_EQ(test::runCli("eval --gt " + gt.string() + " --est " + est.string() + " --errors " +
+                             (dir / "missing" / "errors.csv").string(),
+                         &out),
+            2);
+  EXPECT_NE(out.find("missing"), std::string::npos) << out;
 }
 
 TEST(EvalCli, BadInputExitsTwoNamingTheFile) {
   const fs::path dir = test::scratchDir("evalbad");
   const auto gt = writeCircle(dir, "gt.txt", 0.0);
   std::string out;
-  EXPECT_EQ(test::runCli("eval --gt " + gt.string() + " --est " + (dir / "missing.txt").string(), &out), 2);
+  EXPECT_EQ(
+      test::runCli("eval --gt " + gt.string() + " --est " + (dir / "missing.txt").string(), &out),
+      2);
   EXPECT_NE(out.find("missing.txt"), std::string::npos) << out;
   std::ofstream(dir / "broken.txt") << "1 2 3\n";
-  EXPECT_EQ(test::runCli("eval --gt " + gt.string() + " --est " + (dir / "broken.txt").string(), &out), 2);
+  EXPECT_EQ(
+      test::runCli("eval --gt " + gt.string() + " --est " + (dir / "broken.txt").string(), &out),
+      2);
   EXPECT_NE(out.find("broken.txt:1"), std::string::npos) << out;
   EXPECT_EQ(test::runCli("eval --gt " + gt.string(), &out), 2);  // --est is required
   EXPECT_EQ(test::runCli("no-such-command", &out), 2);
@@ -60,15 +86,29 @@ TEST(EvalCli, StatsScoresMovingFlagsOrSaysWhyNot) {
   const fs::path off = test::scratchDir("evalstats_off");
   const fs::path part = test::scratchDir("evalstats_part");
   std::string out;
-  ASSERT_EQ(test::runCli("simulate --scenario pushed-box --frames 20 --out " + seq.string(), &out), 0) << out;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + on.string() + " --segmenter masks --quiet", &out), 0) << out;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + off.string() + " --dynamic off --quiet", &out), 0) << out;
-  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + part.string() + " --segmenter masks --max-frames 10 --quiet", &out), 0)
+  ASSERT_EQ(test::runCli("simulate --scenario pushed-box --frames 20 --out " + seq.string(), &out),
+            0)
       << out;
-  const std::string base = "eval --gt " + (seq / "groundtruth.txt").string() + " --sequence " + seq.string();
+  ASSERT_EQ(
+      test::runCli("run " + seq.string() + " --out " + on.string() + " --segmenter masks --quiet",
+                   &out),
+      0)
+      << out;
+  ASSERT_EQ(test::runCli(
+                "run " + seq.string() + " --out " + off.string() + " --dynamic off --quiet", &out),
+            0)
+      << out;
+  ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + part.string() +
+                             " --segmenter masks --max-frames 10 --quiet",
+                         &out),
+            0)
+      << out;
+  const std::string base =
+      "eval --gt " + (seq / "groundtruth.txt").string() + " --sequence " + seq.string();
   auto evalRun = [&](const fs::path& run, const std::string& extra) {
     return test::runCli(base + " --est " + (run / "trajectory.txt").string() + " --stats " +
-                            (run / "stats.json").string() + extra, &out);
+                            (run / "stats.json").string() + extra,
+                        &out);
   };
   ASSERT_EQ(evalRun(on, " --json"), 0) << out;
   const auto json = nlohmann::json::parse(out.substr(out.find('{')));
@@ -84,7 +124,10 @@ TEST(EvalCli, StatsScoresMovingFlagsOrSaysWhyNot) {
   EXPECT_NE(out.find("--dynamic off"), std::string::npos) << out;
   EXPECT_EQ(evalRun(part, ""), 2);
   EXPECT_NE(out.find("10 frames of moving flags but 20"), std::string::npos) << out;
-  EXPECT_EQ(test::runCli("eval --gt " + (seq / "groundtruth.txt").string() + " --est " + (on / "trajectory.txt").string() +
-                             " --stats " + (on / "stats.json").string(), &out), 2);  // needs --sequence
+  EXPECT_EQ(test::runCli("eval --gt " + (seq / "groundtruth.txt").string() + " --est " +
+                             (on / "trajectory.txt").string() + " --stats " +
+                             (on / "stats.json").string(),
+                         &out),
+            2);  // needs --sequence
   EXPECT_NE(out.find("--sequence"), std::string::npos) << out;
 }
