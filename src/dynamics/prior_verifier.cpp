@@ -36,12 +36,13 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
       const SceneFlowVerdict verdict = sceneFlowVerdict(p_old, p_cur, T_cur_old, config_);
       if (!verdict.decided) continue;
       const bool prior = isPriorDynamic(instance, config_);
-      if (prior) ++(verdict.dynamic ? out.prior_moving : out.prior_static);
+      if (prior && (verdict.dynamic || verdict.still))
+        ++(verdict.dynamic ? out.prior_moving : out.prior_static);
       if (instances.labels.empty()) continue;
       // The object now: where its sampled pixels went along the flow.
       const uint16_t now = labelAlongFlow(instances.labels, pixels, flow);
       if (!verdict.dynamic) {
-        if (prior && now) out.static_ids.push_back(now);
+        if (prior && now && verdict.still) out.static_ids.push_back(now);
         continue;
       }
       if (now) out.moving_ids.push_back(now);

@@ -22,6 +22,10 @@ struct SceneFlowVerdict {
   double mean_vector_m = 0;  ///< length of the mean 3D displacement vector (noise cancels)
   bool decided = false;      ///< enough points for a verdict
   bool dynamic = false;
+  /// Decided, not dynamic, and the mean displacement vector within scene_flow_point_m: confidently
+  /// standing still. A verdict between the two (the mean moved, too few points past their noise
+  /// threshold: a far walker) is neither.
+  bool still = false;
 };
 
 /// Displacement (m) above which one point counts as moving: scene_flow_point_m, or

@@ -139,3 +139,34 @@ TEST(SceneFlow, FarStaticObjectWithEgoMotionErrorStaysStaticWalkerStillMoves) {
   EXPECT_FALSE(sceneFlowVerdict(chair_prev, chair_cur, SE3::Identity(), c).dynamic);
   EXPECT_TRUE(sceneFlowVerdict(chair_prev, walker_cur, SE3::Identity(), c).dynamic);
 }
+
+TEST(SceneFlow, StillNeedsTheObjectsMeanToStayPutNotOnlyItsPoints) {
+  // 4 m away: a person standing, and one walking 0.8 m/s (8 cm over the verifier's 3 frames,
+  // below each point's noise-grown threshold of 10.9 cm). Neither is dynamic; only the one whose
+  // mean displacement stays within scene_flow_point_m is still (a walker must not be called
+  // "verified static": the tracker would hold its speed at 0).
+  std::mt19937 rng(6);
+  DynamicsConfig c;
+  const auto p_prev = blob(200, Vec3(0.5, 0, 4.0), rng);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  auto noisy = [&](const Vec3& p) {
+    const double sigma = c.depth_noise_per_z2 * p.z() * p.z();
+    return Vec3(p * (1.0 + sigma * unit(rng) / p.norm()));
+  };
+  std::vector<Vec3> prev, standing, walking;
+  for (const auto& p : p_prev) {
+    prev.push_back(noisy(p));
+    standing.push_back(noisy(p));
+    walking.push_back(noisy(p) + Vec3(0.08, 0, 0));
+  }
+  const auto still = sceneFlowVerdict(prev, standing, SE3::Identity(), c);
+  EXPECT_TRUE(still.decided);
+  EXPECT_FALSE(still.dynamic);
+  EXPECT_TRUE(still.still);
+  const auto walker = sceneFlowVerdict(prev, walking, SE3::Identity(), c);
+  EXPECT_TRUE(walker.decided);
+  EXPECT_FALSE(walker.dynamic);
+  EXPECT_FALSE(walker.still);
+  // Too few points: no verdict of either kind.
+  EXPECT_FALSE(sceneFlowVerdict({Vec3(0, 0, 1)}, {Vec3(0, 0, 1)}, SE3::Identity(), c).still);
+}
