@@ -14,6 +14,12 @@ std::vector<Vec3> blob(int n, const Vec3& centre, std::mt19937& rng) {
   for (int i = 0; i < n; ++i) points.push_back(centre + Vec3(d(rng), 2 * d(rng), 0.3 * d(rng)));
   return points;
 }
+/// p with the sensor's depth noise (depth_noise_per_z2 * z^2) along its viewing ray.
+Vec3 withRayNoise(const Vec3& p, const DynamicsConfig& c, std::mt19937& rng) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double sigma = c.depth_noise_per_z2 * p.z() * p.z();
+  return Vec3(p * (1.0 + sigma * unit(rng) / p.norm()));
+}
 }  // namespace
 
 TEST(SceneFlow, EgoMotionAloneIsStatic) {
@@ -121,11 +127,7 @@ TEST(SceneFlow, FarStaticObjectWithEgoMotionErrorStaysStaticWalkerStillMoves) {
   std::mt19937 rng(5);
   DynamicsConfig c;
   const auto p_prev = blob(200, Vec3(0.5, 0, 4.0), rng);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  auto noisy = [&](const Vec3& p) {
-    const double sigma = c.depth_noise_per_z2 * p.z() * p.z();
-    return Vec3(p * (1.0 + sigma * unit(rng) / p.norm()));  // noise along the viewing ray
-  };
+  auto noisy = [&](const Vec3& p) { return withRayNoise(p, c, rng); };
   const Vec3 pose_error(0.025, 0, 0);
   std::vector<Vec3> chair_prev, chair_cur, walker_cur;
   for (const auto& p : p_prev) {
@@ -148,11 +150,7 @@ TEST(SceneFlow, StillNeedsTheObjectsMeanToStayPutNotOnlyItsPoints) {
   std::mt19937 rng(6);
   DynamicsConfig c;
   const auto p_prev = blob(200, Vec3(0.5, 0, 4.0), rng);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  auto noisy = [&](const Vec3& p) {
-    const double sigma = c.depth_noise_per_z2 * p.z() * p.z();
-    return Vec3(p * (1.0 + sigma * unit(rng) / p.norm()));
-  };
+  auto noisy = [&](const Vec3& p) { return withRayNoise(p, c, rng); };
   std::vector<Vec3> prev, standing, walking;
   for (const auto& p : p_prev) {
     prev.push_back(noisy(p));
