@@ -134,15 +134,18 @@ AteResult computeAte(const std::vector<StampedPose>& gt, const std::vector<Stamp
 }
 
 RpeResult computeRpe(const std::vector<StampedPose>& gt, const std::vector<StampedPose>& est) {
-  if (gt.size() < 2 || est.size() < 2) throw InputError("", "RPE needs at least 2 poses in each file");
+  if (gt.size() < 2 || est.size() < 2)
+    throw InputError("", "RPE needs at least 2 poses in each file");
   const auto stamps_gt = stampsOf(gt);
   const auto stamps_est = stampsOf(est);
   std::vector<double> intervals;
-  for (size_t k = 1; k < stamps_gt.size(); ++k) intervals.push_back(stamps_gt[k] - stamps_gt[k - 1]);
+  for (size_t k = 1; k < stamps_gt.size(); ++k)
+    intervals.push_back(stamps_gt[k] - stamps_gt[k - 1]);
   std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
   double median = intervals[intervals.size() / 2];
   if (intervals.size() % 2 == 0) {  // numpy.median averages the two middle values
-    const double lower = *std::max_element(intervals.begin(), intervals.begin() + intervals.size() / 2);
+    const double lower =
+        *std::max_element(intervals.begin(), intervals.begin() + intervals.size() / 2);
     median = 0.5 * (median + lower);
   }
   const double gt_max_dt = 2.0 * median;
@@ -166,7 +169,8 @@ RpeResult computeRpe(const std::vector<StampedPose>& gt, const std::vector<Stamp
     trans.push_back(error.translation().norm());
     rot.push_back(rotationAngle(error.linear()) * 180.0 / M_PI);
   }
-  if (trans.size() < 2) throw InputError("", "RPE: fewer than 2 pose pairs overlap the ground truth");
+  if (trans.size() < 2)
+    throw InputError("", "RPE: fewer than 2 pose pairs overlap the ground truth");
   RpeResult result;
   result.translation_m = errorStats(trans);
   result.rotation_deg = errorStats(rot);

@@ -35,10 +35,10 @@ struct RpeResult {
 };
 
 struct Coverage {
-  size_t tracked_frames = 0;       ///< estimated poses
-  size_t total_frames = 0;         ///< input frames, when known (0 = unknown)
-  double covered_span_s = 0.0;     ///< time of the GT span covered by the estimate
-  double gt_span_s = 0.0;          ///< GT span (restricted to the input frames' span when known)
+  size_t tracked_frames = 0;    ///< estimated poses
+  size_t total_frames = 0;      ///< input frames, when known (0 = unknown)
+  double covered_span_s = 0.0;  ///< time of the GT span covered by the estimate
+  double gt_span_s = 0.0;       ///< GT span (restricted to the input frames' span when known)
 };
 
 /// Greedy association of two stamp lists (associate.py): index pairs sorted by the first list.

@@ -214,7 +214,7 @@ TEST(SimulateCli, RollingShutterWalkIsTrackedWithTheReadoutFromCameraYaml) {
 // Measured (2026-12-02): ATE 0.0102 m, 250 of 149988 keypoints flagged (0.17 %).
 constexpr double kHeadTurnAteBoundM = 0.015;
 constexpr double kHeadTurnFlaggedShareBound = 0.005;  // issue 18's target: < 1 %
-constexpr double kReadoutAtTruthToleranceMs = 2.0;     // issue 18's target: within 3 ms
+constexpr double kReadoutAtTruthToleranceMs = 2.0;    // issue 18's target: within 3 ms
 
 TEST(SimulateCli, FastHeadTurnsWithBlurAndRollingShutterAreTracked) {
   const fs::path dir = scratchDir("sim_head_turns");
