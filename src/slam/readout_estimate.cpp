@@ -118,12 +118,13 @@ ReadoutEvidence readoutEvidence(const Frame& frame, const KeypointMeasurements& 
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> pose(H.topLeftCorner<6, 6>());
   if (pose.info() != Eigen::Success) return evidence;
   const Eigen::Matrix<double, 6, 1> coupling = H.block<6, 1>(0, 6);
-  const double information = H(6, 6) - coupling.dot(pose.solve(coupling));
+  const Eigen::Matrix<double, 6, 1> pose_shift = pose.solve(coupling);
+  const double information = H(6, 6) - coupling.dot(pose_shift);
   const double gradient = b(6) - coupling.dot(pose.solve(b.head<6>()));
   if (!(information > 0.0) || !std::isfinite(gradient)) return evidence;
   evidence.information_per_s2 = information;
   evidence.readout_s = gradient / information;
-  evidence.pose_shift_per_s = pose.solve(coupling);
+  evidence.pose_shift_per_s = pose_shift;
   // A frame whose estimate leaves [-1, 2] frame intervals has a wrong velocity or matches.
   evidence.valid =
       std::abs(evidence.readout_s - 0.5 * motion.interval_s) <= 1.5 * motion.interval_s;

@@ -9,18 +9,19 @@
 //
 // The map is not free of the shutter either: a keyframe re-timed with readout R0 while the true one
 // is R places its points off by (R - R0) * s_K * (its own motion), the same way as the current
-// frame sees them when it moves alike; against such a map the shear cancels and an estimate that
-// ignored it came out at 4 ms for a true 25 ms (simulated static room). So each map point's
-// position is modelled as the mean over its observing keyframes of that shift (each keyframe
-// keeps its motion and the readout it used), plus the shift of the keyframe's own pose, which a
-// wrong readout biased as it biases the current frame's (each keyframe keeps that derivative);
-// bundle adjustment mixes them much like that mean.
+// frame sees them when it moves alike; against such a map the shear cancels (this session's first
+// version, which ignored it, read 4 ms for a true 25 ms in the simulated static room). So each map
+// point's position is modelled as the mean over its observing keyframes of that shift (each
+// keyframe keeps its motion and the readout it used), plus the shift of the keyframe's own pose,
+// which a wrong readout biased as it biases the current frame's (each keyframe keeps that
+// derivative); bundle adjustment mixes them much like that mean.
 //
-// That model is not the whole story: keyframe poses fitted with a wrong readout are biased too,
-// so evidence gathered while re-timing with R0 reads R0 + g (R - R0) with a gain g < 1 (0.2-0.6
-// in the simulator; at R0 = R it is unbiased: 24.6 ms for a true 25). The online mode therefore
-// iterates to that fixed point in stages (Tracker::readoutFor): gather evidence at R0 until it
-// settles, adopt its estimate as the next R0, start again.
+// The model is first order and bundle adjustment refines points and poses after it, so evidence
+// gathered while re-timing with R0 reads R0 + g (R - R0) with a gain g < 1 (0.1-0.8 in the
+// simulator: 3 ms in head turns, 20 ms in a static room for a true 25 ms; at R0 = R it is
+// unbiased: 24.87-24.91 ms for a true 25 in the head turns, scripts/readout_results.sh). The online
+// mode therefore iterates to that fixed point in stages (Tracker::readoutFor): gather evidence at
+// R0 until it settles, adopt its estimate as the next R0, start again.
 //
 // Per frame: linearise the residuals of the matched inliers in (pose, readout) at the readout the
 // pose was fitted with, weight them as pose optimisation does (pyramid level, Huber), and
