@@ -17,6 +17,14 @@ struct Triangle {
   int texture = 0;
 };
 
+/// Six zero texture offsets. Not `{}`: an Eigen vector's default constructor leaves it
+/// uninitialised, so `{}` gave boxes garbage texture coordinates (found under ASan + UBSan).
+inline std::array<Vec2f, 6> noUvOffsets() {
+  std::array<Vec2f, 6> offsets;
+  offsets.fill(Vec2f::Zero());
+  return offsets;
+}
+
 struct Mesh {
   std::vector<Vec3f> positions;
   std::vector<Vec2f> uvs;  ///< one per position
@@ -39,7 +47,7 @@ struct Mesh {
   /// gives +x, -x, +y, -y, +z, -z faces; each face starts at its own texture offset so the
   /// same texture on several faces does not repeat visibly.
   void addBox(const Vec3f& centre, const Vec3f& size, const std::array<int, 6>& textures,
-              float texels_per_m, const std::array<Vec2f, 6>& uv_offsets = {});
+              float texels_per_m, const std::array<Vec2f, 6>& uv_offsets = noUvOffsets());
   void addBox(const Vec3f& centre, const Vec3f& size, int texture, float texels_per_m,
               float uv_offset = 0.0f);
   /// A vertical n-sided prism (cylinder stand-in) with caps, base centre at `base`.

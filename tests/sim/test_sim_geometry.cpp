@@ -183,4 +183,17 @@ TEST(SimGeometry, QuadAtKnownDepth) {
 }
 
 }  // namespace
+TEST(SimGeometry, BoxWithoutOffsetsStartsEveryFaceAtTexelZero) {
+  // A 0.5 m box at 100 texels/m: one tile per face, its texture coordinates 0..50 texels.
+  // (The default offsets were once left uninitialised and read as garbage under ASan.)
+  Mesh box;
+  box.addBox(Vec3f(0, 0, 2), Vec3f(0.5f, 0.5f, 0.5f), {0, 1, 2, 3, 4, 5}, 100.0f);
+  ASSERT_EQ(box.uvs.size(), 6u * 4u);
+  for (size_t f = 0; f < 6; ++f) EXPECT_EQ(box.uvs[4 * f], Vec2f::Zero()) << "face " << f;
+  for (const Vec2f& uv : box.uvs) {
+    EXPECT_GE(uv.minCoeff(), 0.0f);
+    EXPECT_LE(uv.maxCoeff(), 50.0f + 1e-3f);
+  }
+}
+
 }  // namespace dynanav::sim
