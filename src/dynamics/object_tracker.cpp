@@ -425,8 +425,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // walker far down a hall, not yet flagged moving, was held still for its first frames).
   const bool slow = (filterVelocityKnown(track) && isSlow(track.filter.velocity())) ||
                     (v_measured && isSlow(*v_measured));
-  track.stationary = verified_static || (track.still >= config_.static_after_frames &&
-                                         (slow || track.still >= 3 * config_.static_after_frames));
+  // Not found moving is not found still: the dynamics stage gives no verdict on an object it
+  // cannot judge (a person walking in at the image's side was made static after 9 frames while
+  // its points measured 0.5-0.7 m/s, and then held still). So "three times as long" needs the
+  // track's own velocity measured, and not clearly above the static speed (by one sigma).
+  const bool fast =
+      filterVelocityKnown(track) &&
+      track.filter.velocity().norm() - track.filter.velocitySigma() > config_.static_speed_mps;
+  const bool long_unmoved =
+      track.still >= 3 * config_.static_after_frames && filterVelocityKnown(track) && !fast;
+  track.stationary =
+      verified_static || (track.still >= config_.static_after_frames && (slow || long_unmoved));
   if (track.stationary) {
     track.filter.holdStill();
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.
