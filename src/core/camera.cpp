@@ -18,7 +18,8 @@ cv::Mat PinholeCamera::distCoeffs() const {
           distortion[4]);
 }
 
-std::vector<cv::Point2f> PinholeCamera::undistortPixels(const std::vector<cv::Point2f>& pixels) const {
+std::vector<cv::Point2f> PinholeCamera::undistortPixels(
+    const std::vector<cv::Point2f>& pixels) const {
   if (!isDistorted() || pixels.empty()) return pixels;
   std::vector<cv::Point2f> out;
   // P = K maps the normalised undistorted coordinates back to pixels.
@@ -49,7 +50,10 @@ cv::Rect2d PinholeCamera::undistortedBounds() const {
 PinholeCamera PinholeCamera::tumFreiburg1() {
   PinholeCamera c;
   c.name = "tum_freiburg1";
-  c.fx = 517.306408; c.fy = 516.469215; c.cx = 318.643040; c.cy = 255.313989;
+  c.fx = 517.306408;
+  c.fy = 516.469215;
+  c.cx = 318.643040;
+  c.cy = 255.313989;
   c.distortion = {0.262383, -0.953104, -0.005358, 0.002628, 1.163314};
   // Kinect v1 colour camera, rolling shutter. Not published with the dataset: chosen from the
   // readout sweep on the first half of fr1_xyz (docs/slam.md, "Rolling shutter"); 25 ms of the
@@ -62,7 +66,10 @@ PinholeCamera PinholeCamera::tumFreiburg2() {
   // TUM's published fr2 calibration (ORB-SLAM2 TUM2.yaml agrees).
   PinholeCamera c;
   c.name = "tum_freiburg2";
-  c.fx = 520.908620; c.fy = 521.007327; c.cx = 325.141442; c.cy = 249.701764;
+  c.fx = 520.908620;
+  c.fy = 521.007327;
+  c.cx = 325.141442;
+  c.cy = 249.701764;
   c.distortion = {0.231222, -0.784899, -0.003257, -0.000105, 0.917205};
   return c;
 }
@@ -70,7 +77,10 @@ PinholeCamera PinholeCamera::tumFreiburg2() {
 PinholeCamera PinholeCamera::tumFreiburg3() {
   PinholeCamera c;
   c.name = "tum_freiburg3";
-  c.fx = 535.4; c.fy = 539.2; c.cx = 320.1; c.cy = 247.6;
+  c.fx = 535.4;
+  c.fy = 539.2;
+  c.cx = 320.1;
+  c.cy = 247.6;
   c.distortion = {0, 0, 0, 0, 0};  // fr3 images are already undistorted
   return c;
 }
@@ -78,7 +88,10 @@ PinholeCamera PinholeCamera::tumFreiburg3() {
 PinholeCamera PinholeCamera::bonn() {
   PinholeCamera c;
   c.name = "bonn";
-  c.fx = 542.822841; c.fy = 542.576870; c.cx = 315.593520; c.cy = 237.756098;
+  c.fx = 542.822841;
+  c.fy = 542.576870;
+  c.cx = 315.593520;
+  c.cy = 237.756098;
   c.distortion = {0.039903, -0.099343, -0.000730, -0.000144, 0.0};
   // The Xtion's rolling-shutter readout is not published. The readout estimated from the tracking
   // residuals of the Bonn crowd window (slam/readout_estimate) is unbiased only at the true value
@@ -90,10 +103,22 @@ PinholeCamera PinholeCamera::bonn() {
 
 bool PinholeCamera::fromSequenceName(const std::string& folder_name, PinholeCamera& camera) {
   const auto has = [&](const char* s) { return folder_name.find(s) != std::string::npos; };
-  if (has("freiburg1") || has("fr1")) { camera = tumFreiburg1(); return true; }
-  if (has("freiburg2") || has("fr2")) { camera = tumFreiburg2(); return true; }
-  if (has("freiburg3") || has("fr3")) { camera = tumFreiburg3(); return true; }
-  if (has("bonn")) { camera = bonn(); return true; }
+  if (has("freiburg1") || has("fr1")) {
+    camera = tumFreiburg1();
+    return true;
+  }
+  if (has("freiburg2") || has("fr2")) {
+    camera = tumFreiburg2();
+    return true;
+  }
+  if (has("freiburg3") || has("fr3")) {
+    camera = tumFreiburg3();
+    return true;
+  }
+  if (has("bonn")) {
+    camera = bonn();
+    return true;
+  }
   return false;
 }
 
