@@ -264,3 +264,30 @@ TEST(ObjectTracker, ObjectThatStopsReportsZeroSpeedSoonAfter) {
     if (i < kStopFrame) x += kPixelsPerFrame;
   }
 }
+
+TEST(ObjectTracker, NotFoundMovingIsNotStaticWhileTheOwnVelocityIsFast) {
+  // A walker the dynamics stage gives no verdict on (neither moving nor still: scene flow cannot
+  // judge a person walking in at the image's side). Its points move at 3 px per frame (0.35 m/s)
+  // scaled up by flowing 2.5x as far: it must keep its speed, not be made static after
+  // 3 x static_after_frames frames of "not found moving" and then held still.
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  constexpr float kScale = 2.5f;
+  const double expected = kScale * kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  float x = 100.f;
+  std::vector<TrackedObject> out;
+  for (int i = 0; i < 40; ++i) {
+    SynthFrame f = frame({x}, {true}, i > 0);
+    if (i > 0) f.flow_half *= kScale;
+    const FrameDynamics no_verdict;
+    const SE3 T = SE3::Identity();
+    const PinholeCamera cam = camera();
+    out =
+        tracker.track({i, i / 30.0, f.instances, no_verdict, f.flow_half, f.depth_m, T, true, cam});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i >= 20) {
+      EXPECT_TRUE(out[0].dynamic) << "frame " << i;
+      EXPECT_NEAR(out[0].speed_mps, expected, 0.25) << "frame " << i;
+    }
+    x += kScale * kPixelsPerFrame;
+  }
+}
