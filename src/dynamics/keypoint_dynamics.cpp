@@ -6,6 +6,7 @@
 
 #include "dynamics/depth_difference.hpp"
 #include "dynamics/depth_tolerance.hpp"
+#include "dynamics/moving_evidence.hpp"
 
 namespace dynanav {
 
@@ -85,7 +86,7 @@ void labelKeypoints(Features& features, const cv::Mat& labels) {
 
 MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
                              const DynamicsConfig& config, const DepthTestMotion& motion,
-                             const std::vector<uint16_t>& known_moving) {
+                             const std::vector<float>& moving_evidence) {
   const Features& f = frame.features;
   const double focal_px = f.camera ? f.camera->fx : 0.0;
   std::vector<DepthCheck> checks(f.keypoints.size());
@@ -110,16 +111,23 @@ MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predi
     check.nearby_min_m = nearby.min_m;
     check.nearby_max_m = nearby.max_m;
   }
-  const DepthDifferenceResult result = classifyByDepthDifference(checks, config);
+  DepthDifferenceResult result = classifyByDepthDifference(checks, config);
   MoverVerdict out;
   out.checked = result.checked;
   for (const auto& [id, vote] : result.instances)
-    if (vote.dynamic) out.moving_instances.push_back(id);
-  for (uint16_t id : known_moving)
-    if (std::find(out.moving_instances.begin(), out.moving_instances.end(), id) ==
-        out.moving_instances.end())
-      out.moving_instances.push_back(id);
-  std::sort(out.moving_instances.begin(), out.moving_instances.end());
+    if (vote.dynamic) out.moving_instances.push_back(id);  // ascending: the map is ordered
+  if (!moving_evidence.empty()) {
+    // Outside masks, a map point's votes over frames decide (inside, the instance's vote does).
+    std::vector<DepthVote> votes(checks.size(), DepthVote::kNone);
+    for (size_t i = 0; i < checks.size(); ++i)
+      if (checks[i].measured_depth_m > 0.f && checks[i].predicted_depth_m > 0.f)
+        votes[i] = failsDepthTest(checks[i], config) ? DepthVote::kMoving : DepthVote::kStatic;
+    std::vector<bool> moving;
+    out.drop.moving_evidence = fuseMovingEvidence(votes, moving_evidence, config, moving);
+    for (size_t i = 0; i < checks.size(); ++i)
+      if (!result.instances.count(checks[i].instance) || checks[i].instance == 0)
+        result.keypoint_dynamic[i] = moving[i];
+  }
   // DynaSLAM's asymmetry: a keypoint nearer than its map point may just occlude it, but one
   // measured deeper means the point is no longer there -- it lay on something that moved.
   if (config.cull_vanished_points) {

@@ -55,13 +55,14 @@ struct DepthTestMotion {
 /// keypoint's matched map point in the camera (0 = none; SlamSystem::predictedDepths), measured =
 /// sensor depth at the keypoint, or any depth within the pixels it may be misregistered by while
 /// the camera moves (`motion`; radius capped by config.depth_test_max_radius_px). Dynamic keypoints
-/// (own failure, or in an instance voted dynamic) are to be dropped. Instances in `known_moving`
-/// are treated as voted dynamic (a mover stays a mover for the frames where too few of its points
-/// are matched to vote). Map points measured deeper than predicted are to be culled when
-/// config.cull_vanished_points; those of keypoints on a moving instance when
-/// config.cull_moving_object_points. Reads the frame only.
+/// (in an instance voted dynamic; outside masks: its own failure, or with `moving_evidence`, its
+/// map point's evidence over frames, moving_evidence.hpp) are to be dropped. `moving_evidence`:
+/// per keypoint, the evidence its map point carries (NaN = no map point; empty = one-frame votes
+/// only); the updated values come back in MoverVerdict::drop.moving_evidence. Map points measured
+/// deeper than predicted are to be culled when config.cull_vanished_points; those of keypoints on a
+/// moving instance when config.cull_moving_object_points. Reads the frame only.
 MoverVerdict findDepthMovers(const Frame& frame, const std::vector<float>& predicted_depth_m,
                              const DynamicsConfig& config, const DepthTestMotion& motion = {},
-                             const std::vector<uint16_t>& known_moving = {});
+                             const std::vector<float>& moving_evidence = {});
 
 }  // namespace dynanav

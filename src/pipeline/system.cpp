@@ -122,8 +122,10 @@ void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Fr
   const DepthTestMotion motion{input.depth_m, initial.motion_since_last,
                                depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s),
                                initial.retime ? initial.readout_s : 0.0};
+  const std::vector<float> evidence =
+      config_.dynamics.moving_evidence ? slam_->movingEvidence(frame) : std::vector<float>();
   const MoverVerdict verdict =
-      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics, motion);
+      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics, motion, evidence);
   record.culled_points += slam_->applyDrop(frame, verdict.drop);
   record.dynamic_keypoints += static_cast<int>(verdict.drop.drop.size());
   record.moving_instances += static_cast<int>(verdict.moving_instances.size());

@@ -1,5 +1,7 @@
 #include "slam/keypoint_drop.hpp"
 
+#include <cmath>
+
 namespace dynanav {
 
 std::vector<float> predictedMapPointDepths(const Frame& frame) {
@@ -12,7 +14,20 @@ std::vector<float> predictedMapPointDepths(const Frame& frame) {
   return depth_m;
 }
 
+std::vector<float> mapPointMovingEvidence(const Frame& frame) {
+  std::vector<float> evidence(frame.size(), std::nanf(""));
+  for (int i = 0; i < frame.size(); ++i) {
+    const MapPointPtr& point = frame.map_points[i];
+    if (!point || frame.outlier[i] || point->bad) continue;
+    evidence[i] = point->moving_evidence;
+  }
+  return evidence;
+}
+
 int applyKeypointDrop(Frame& frame, const KeypointDrop& drop) {
+  for (size_t i = 0; i < drop.moving_evidence.size() && int(i) < frame.size(); ++i)
+    if (!std::isnan(drop.moving_evidence[i]) && frame.map_points[i])
+      frame.map_points[i]->moving_evidence = drop.moving_evidence[i];
   int culled = 0;
   auto cull = [&culled](const MapPointPtr& point) {
     if (!point || point->bad || point->numObservations() < 1) return;

@@ -16,12 +16,21 @@ struct KeypointDrop {
   std::vector<int> drop;
   /// Per entry of `drop`: also cull its map point (the keypoint lies on a moving object).
   std::vector<bool> cull_on_drop;
-  [[nodiscard]] bool empty() const { return cull_vanished.empty() && drop.empty(); }
+  /// Per keypoint (or empty): the moving evidence to store in its map point (NaN: none), written
+  /// before anything is dropped (dynamics/moving_evidence.hpp).
+  std::vector<float> moving_evidence;
+  [[nodiscard]] bool empty() const {
+    return cull_vanished.empty() && drop.empty() && moving_evidence.empty();
+  }
 };
 
 /// Depth of each keypoint's matched map point in the frame's camera at its current pose (0 = no
 /// usable match: none, an outlier, or a bad point). The caller holds the map lock.
 std::vector<float> predictedMapPointDepths(const Frame& frame);
+
+/// The moving evidence of each keypoint's matched map point (NaN = no usable match, as
+/// predictedMapPointDepths). The caller holds the map lock.
+std::vector<float> mapPointMovingEvidence(const Frame& frame);
 
 /// Applies `drop` to the frame, in order: vanished points culled, then each dropped keypoint's
 /// point culled if asked, and the keypoint made unusable. A point is culled once (set bad) and

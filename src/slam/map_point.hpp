@@ -36,6 +36,9 @@ class MapPoint {
   int found = 1;    ///< frames in which it was matched
   bool bad = false;
   std::shared_ptr<MapPoint> replaced_by;  ///< set when fused into another point
+  /// Log-odds evidence (without the prior) that the point lies on something that moves, from the
+  /// depth tests of the frames that matched it (dynamics/moving_evidence.hpp). Tracking only.
+  float moving_evidence = 0.f;
 
   // Scratch written by tracking for the current frame (ORB-SLAM2 mbTrackInView & co.).
   bool track_in_view = false;

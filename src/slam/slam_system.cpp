@@ -72,6 +72,11 @@ std::vector<float> SlamSystem::predictedDepths(const Frame& frame) const {
   return predictedMapPointDepths(frame);
 }
 
+std::vector<float> SlamSystem::movingEvidence(const Frame& frame) const {
+  std::unique_lock lock(map_->mutex());
+  return mapPointMovingEvidence(frame);
+}
+
 int SlamSystem::applyDrop(Frame& frame, const KeypointDrop& drop) {
   if (drop.empty()) return 0;
   std::unique_lock lock(map_->mutex());

@@ -44,6 +44,8 @@ class SlamSystem {
   InitialPose initialPose(Frame& frame);
   /// For 5: depth of each keypoint's matched map point in the frame's camera (0 = no usable match).
   [[nodiscard]] std::vector<float> predictedDepths(const Frame& frame) const;
+  /// For 5: the moving evidence of each keypoint's matched map point (NaN = no usable match).
+  [[nodiscard]] std::vector<float> movingEvidence(const Frame& frame) const;
   /// 5. Applies mover rejection's decision; returns the map points culled.
   int applyDrop(Frame& frame, const KeypointDrop& drop);
   /// 6. Local-map tracking on the static points left, and the keyframe decision.

@@ -31,6 +31,12 @@ struct DynamicsConfig {
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
+  bool moving_evidence = true;
+  double moving_prior_log_odds = -1.0;
+  double moving_vote_log_odds = 2.0;
+  double static_vote_log_odds = 0.5;
+  double moving_evidence_min = -2.0;
+  double moving_evidence_max = 3.0;
   template <class V>
   void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
@@ -108,6 +114,27 @@ struct DynamicsConfig {
       "they were mapped while it stood still and are no longer where the map says");
     v("sample_step_px", sample_step_px,
       "object points are sampled every this many pixels in the mask", Range{1, 1000});
+    v("moving_evidence", moving_evidence,
+      "outside instance masks, a keypoint is dropped when its map point's depth-test votes over "
+      "frames make it more likely moving than not (log-odds below), not on one frame's vote");
+    v("moving_prior_log_odds", moving_prior_log_odds,
+      "moving evidence: prior log-odds that a map point moves (-1: p = 0.27, so one failed depth "
+      "test on a new point drops it, as a one-frame vote would)",
+      Range{-20, 20});
+    v("moving_vote_log_odds", moving_vote_log_odds,
+      "moving evidence: log-odds added by a failed depth test", Range{0, 20});
+    v("static_vote_log_odds", static_vote_log_odds,
+      "moving evidence: log-odds taken away by a passed depth test (a background point checked "
+      "static in 2 frames survives one failure)",
+      Range{0, 20});
+    v("moving_evidence_min", moving_evidence_min,
+      "moving evidence: lower clamp (a long-static point still gives way to two failures in a "
+      "row: it may be on something that started moving)",
+      Range{-100, 0});
+    v("moving_evidence_max", moving_evidence_max,
+      "moving evidence: upper clamp (a point voted moving in several frames comes back after 4 "
+      "passed tests)",
+      Range{0, 100});
   }
 };
 
