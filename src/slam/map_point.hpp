@@ -25,15 +25,15 @@ class MapPoint {
 
   const uint64_t id;
   Vec3 p_world;
-  Vec3 normal = Vec3::Zero();      ///< mean unit viewing direction (point minus camera centre)
-  cv::Mat descriptor;              ///< 1 x 32, the observation closest to all others
-  float min_distance_m = 0.f;      ///< scale-invariance range (ORB-SLAM2 mfMinDistance)
+  Vec3 normal = Vec3::Zero();  ///< mean unit viewing direction (point minus camera centre)
+  cv::Mat descriptor;          ///< 1 x 32, the observation closest to all others
+  float min_distance_m = 0.f;  ///< scale-invariance range (ORB-SLAM2 mfMinDistance)
   float max_distance_m = 0.f;
   KeyFrame* reference = nullptr;
   uint64_t first_keyframe_id = 0;
   std::map<KeyFrame*, int, KeyFrameIdLess> observations;  ///< keyframe -> keypoint index
-  int visible = 1;  ///< frames in whose frustum it was
-  int found = 1;    ///< frames in which it was matched
+  int visible = 1;                                        ///< frames in whose frustum it was
+  int found = 1;                                          ///< frames in which it was matched
   bool bad = false;
   std::shared_ptr<MapPoint> replaced_by;  ///< set when fused into another point
   /// Log-odds evidence (without the prior) that the point lies on something that moves, from the
@@ -45,15 +45,17 @@ class MapPoint {
   float track_u = 0.f, track_v = 0.f, track_u_right = 0.f;
   int track_level = 0;
   float track_view_cos = 0.f;
-  uint64_t last_seen_frame = UINT64_MAX;      ///< frame id that matched it
-  uint64_t local_for_frame = UINT64_MAX;      ///< frame id whose local map holds it
+  uint64_t last_seen_frame = UINT64_MAX;  ///< frame id that matched it
+  uint64_t local_for_frame = UINT64_MAX;  ///< frame id whose local map holds it
   uint64_t ba_local_for_keyframe = UINT64_MAX;
   uint64_t fuse_target_keyframe = UINT64_MAX;
 
   /// ORB-SLAM2's observation count: an observation with depth counts twice (it constrains the
   /// point like a stereo pair). All thresholds on observations use this count.
   [[nodiscard]] int numObservations() const { return weighted_observations_; }
-  [[nodiscard]] bool observedBy(const KeyFrame* kf) const { return observations.count(const_cast<KeyFrame*>(kf)) > 0; }
+  [[nodiscard]] bool observedBy(const KeyFrame* kf) const {
+    return observations.count(const_cast<KeyFrame*>(kf)) > 0;
+  }
   [[nodiscard]] float foundRatio() const { return static_cast<float>(found) / visible; }
   [[nodiscard]] int predictLevel(double distance_m, const PyramidScales& scales) const {
     return scales.predictLevel(max_distance_m, distance_m);
