@@ -16,6 +16,7 @@ struct FrameDynamics {
   int prior_moving = 0;   ///< prior instances whose scene flow says moving
   int prior_static = 0;   ///< prior instances whose scene flow says static
   int culled_points = 0;  ///< map points removed: on a moving object, or vanished
+  int residual_regions = 0;          ///< regions of young points moving against the static map
   double masked_share = 0.0;         ///< image share cut out of extraction
   std::vector<uint16_t> moving_ids;  ///< this frame's instance ids found moving (ascending)
   std::vector<uint16_t> static_ids;  ///< this frame's prior instance ids scene flow found static

@@ -40,12 +40,13 @@ nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std
   const double n = std::max<size_t>(1, history.size());
   double kp = 0, dyn = 0, stat = 0, prior = 0, moving = 0, prior_moving = 0, prior_static = 0,
          masked = 0;
-  int culled = 0;
+  int culled = 0, residual_regions = 0;
   nlohmann::json series = {{"dynamic_keypoints", nlohmann::json::array()},
                            {"static_keypoints", nlohmann::json::array()},
                            {"prior_instances", nlohmann::json::array()},
                            {"dynamic_instances", nlohmann::json::array()},
-                           {"moving_ids", nlohmann::json::array()}};
+                           {"moving_ids", nlohmann::json::array()},
+                           {"residual_regions", nlohmann::json::array()}};
   for (const FrameDynamics& f : history) {
     kp += f.keypoints;
     dyn += f.dynamic_keypoints;
@@ -56,11 +57,13 @@ nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std
     prior_static += f.prior_static;
     masked += f.masked_share;
     culled += f.culled_points;
+    residual_regions += f.residual_regions;
     series["dynamic_keypoints"].push_back(f.dynamic_keypoints);
     series["static_keypoints"].push_back(f.static_keypoints);
     series["prior_instances"].push_back(f.prior_instances);
     series["dynamic_instances"].push_back(f.moving_instances + f.prior_moving);
     series["moving_ids"].push_back(f.moving_ids);
+    series["residual_regions"].push_back(f.residual_regions);
   }
   out["mean_keypoints"] = kp / n;
   out["mean_dynamic_keypoints"] = dyn / n;
@@ -72,6 +75,7 @@ nlohmann::json dynamicsJson(const std::vector<FrameDynamics>& history, const std
   out["mean_prior_static"] = prior_static / n;
   out["mean_masked_share"] = masked / n;
   out["culled_points"] = culled;
+  out["residual_regions"] = residual_regions;  // summed over frames
   out["per_frame"] = series;
   return out;
 }

@@ -8,6 +8,7 @@
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_tracker.hpp"
 #include "dynamics/prior_verifier.hpp"
+#include "dynamics/residual_movers.hpp"
 #include "perception/async_segmenter.hpp"
 #include "slam/frame.hpp"
 #include "slam/slam_system.hpp"
@@ -122,10 +123,17 @@ void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Fr
   const DepthTestMotion motion{input.depth_m, initial.motion_since_last,
                                depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s),
                                initial.retime ? initial.readout_s : 0.0};
-  const std::vector<float> evidence =
-      config_.dynamics.moving_evidence ? slam_->movingEvidence(frame) : std::vector<float>();
-  const MoverVerdict verdict =
-      findDepthMovers(frame, slam_->predictedDepths(frame), config_.dynamics, motion, evidence);
+  const DynamicsConfig& dynamics = config_.dynamics;
+  const MapPointChecks checks =
+      slam_->moverChecks(frame, dynamics.moving_evidence,
+                         dynamics.residual_movers ? dynamics.residual_min_established : 0);
+  MoverVerdict verdict =
+      findDepthMovers(frame, checks.predicted_depth_m, dynamics, motion, checks.moving_evidence);
+  if (dynamics.residual_movers) {  // movers the segmenter missed, moving sideways
+    const ResidualMovers residual = findResidualMovers(frame, checks.residuals, dynamics);
+    addDrops(verdict.drop, residual.keypoints, false);
+    record.residual_regions += residual.regions;
+  }
   record.culled_points += slam_->applyDrop(frame, verdict.drop);
   record.dynamic_keypoints += static_cast<int>(verdict.drop.drop.size());
   record.moving_instances += static_cast<int>(verdict.moving_instances.size());

@@ -1,6 +1,8 @@
 #include "slam/keypoint_drop.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace dynanav {
 
@@ -22,6 +24,25 @@ std::vector<float> mapPointMovingEvidence(const Frame& frame) {
     evidence[i] = point->moving_evidence;
   }
   return evidence;
+}
+
+void addDrops(KeypointDrop& drop, const std::vector<int>& keypoints, bool cull) {
+  std::vector<std::pair<int, bool>> merged;
+  merged.reserve(drop.drop.size() + keypoints.size());
+  for (size_t k = 0; k < drop.drop.size(); ++k)
+    merged.emplace_back(drop.drop[k], drop.cull_on_drop[k]);
+  for (const int i : keypoints) merged.emplace_back(i, cull);
+  std::sort(merged.begin(), merged.end());
+  drop.drop.clear();
+  drop.cull_on_drop.clear();
+  for (const auto& [i, c] : merged) {
+    if (!drop.drop.empty() && drop.drop.back() == i) {
+      drop.cull_on_drop.back() = drop.cull_on_drop.back() || c;
+      continue;
+    }
+    drop.drop.push_back(i);
+    drop.cull_on_drop.push_back(c);
+  }
 }
 
 int applyKeypointDrop(Frame& frame, const KeypointDrop& drop) {

@@ -4,6 +4,7 @@
 // slam's, so the pipeline never touches the map.
 #include <vector>
 
+#include "slam/established_residuals.hpp"
 #include "slam/frame.hpp"
 
 namespace dynanav {
@@ -23,6 +24,17 @@ struct KeypointDrop {
     return cull_vanished.empty() && drop.empty() && moving_evidence.empty();
   }
 };
+
+/// What mover rejection reads from the map for a frame (step 5), gathered under one map lock.
+struct MapPointChecks {
+  std::vector<float> predicted_depth_m;  ///< predictedMapPointDepths()
+  std::vector<float> moving_evidence;    ///< mapPointMovingEvidence(), or empty when not asked
+  std::vector<MapResidual> residuals;    ///< residualsToEstablishedPoints(), or empty
+};
+
+/// Adds `keypoints` (ascending) to `drop`'s drop list, keeping it ascending and unique; a keypoint
+/// already there keeps its entry, with its point culled if either asks.
+void addDrops(KeypointDrop& drop, const std::vector<int>& keypoints, bool cull);
 
 /// Depth of each keypoint's matched map point in the frame's camera at its current pose (0 = no
 /// usable match: none, an outlier, or a bad point). The caller holds the map lock.

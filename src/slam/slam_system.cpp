@@ -67,14 +67,16 @@ InitialPose SlamSystem::initialPose(Frame& frame) {
   return tracker_->initialPose(frame);
 }
 
-std::vector<float> SlamSystem::predictedDepths(const Frame& frame) const {
+MapPointChecks SlamSystem::moverChecks(const Frame& frame, bool evidence,
+                                       int residual_min_established) const {
   std::unique_lock lock(map_->mutex());  // local BA moves points in real-time mode
-  return predictedMapPointDepths(frame);
-}
-
-std::vector<float> SlamSystem::movingEvidence(const Frame& frame) const {
-  std::unique_lock lock(map_->mutex());
-  return mapPointMovingEvidence(frame);
+  MapPointChecks checks;
+  checks.predicted_depth_m = predictedMapPointDepths(frame);
+  if (evidence) checks.moving_evidence = mapPointMovingEvidence(frame);
+  if (residual_min_established > 0)
+    checks.residuals =
+        residualsToEstablishedPoints(frame, config_.tracking, residual_min_established);
+  return checks;
 }
 
 int SlamSystem::applyDrop(Frame& frame, const KeypointDrop& drop) {

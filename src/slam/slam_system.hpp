@@ -42,10 +42,12 @@ class SlamSystem {
                 const cv::Mat& allowed);
   /// 4. Initial pose (motion model, reference keyframe or relocalisation), or map initialisation.
   InitialPose initialPose(Frame& frame);
-  /// For 5: depth of each keypoint's matched map point in the frame's camera (0 = no usable match).
-  [[nodiscard]] std::vector<float> predictedDepths(const Frame& frame) const;
-  /// For 5: the moving evidence of each keypoint's matched map point (NaN = no usable match).
-  [[nodiscard]] std::vector<float> movingEvidence(const Frame& frame) const;
+  /// For 5, under one map lock: the depth of each keypoint's matched map point in the frame's
+  /// camera (0 = no usable match); with `evidence`, each point's moving evidence (NaN = none);
+  /// with `residual_min_established` > 0, each match's residual against a pose refitted to the
+  /// established points (slam/established_residuals.hpp).
+  [[nodiscard]] MapPointChecks moverChecks(const Frame& frame, bool evidence,
+                                           int residual_min_established) const;
   /// 5. Applies mover rejection's decision; returns the map points culled.
   int applyDrop(Frame& frame, const KeypointDrop& drop);
   /// 6. Local-map tracking on the static points left, and the keyframe decision.

@@ -37,6 +37,13 @@ struct DynamicsConfig {
   double static_vote_log_odds = 0.5;
   double moving_evidence_min = -2.0;
   double moving_evidence_max = 3.0;
+  bool residual_movers = true;
+  int residual_min_established = 30;
+  double residual_region_radius_px = 40.0;
+  double residual_region_depth_band_m = 0.3;
+  int residual_region_min_points = 5;
+  double residual_region_chi2 = 13.8;
+  double residual_region_min_px = 2.0;
   template <class V>
   void visit(V&& v) {
     v("prior_dynamic_classes", prior_dynamic_classes,
@@ -135,6 +142,28 @@ struct DynamicsConfig {
       "moving evidence: upper clamp (a point voted moving in several frames comes back after 4 "
       "passed tests)",
       Range{0, 100});
+    v("residual_movers", residual_movers,
+      "young map points (one keyframe) that move together against a pose refitted to the "
+      "established points are a mover the segmenter missed: their keypoints are dropped for the "
+      "frame (dynamics/residual_movers.hpp)");
+    v("residual_min_established", residual_min_established,
+      "residual movers: fewest established points matched for the refitted pose (fewer: no test)",
+      Range{1, 100000});
+    v("residual_region_radius_px", residual_region_radius_px,
+      "residual movers: young keypoints this near in the image (px) join one region",
+      Range{1, 10000});
+    v("residual_region_depth_band_m", residual_region_depth_band_m,
+      "residual movers: ... if their depths differ by at most this (m)", Range{0, 100});
+    v("residual_region_min_points", residual_region_min_points,
+      "residual movers: fewest young keypoints in a region that can be judged", Range{2, 100000});
+    v("residual_region_chi2", residual_region_chi2,
+      "residual movers: a region moves when n |mean(r / sigma)|^2 exceeds this (13.8: 99.9 % of "
+      "chi-square with 2 degrees of freedom: its points' mean residual is not noise) ...",
+      Range{0, 1e6});
+    v("residual_region_min_px", residual_region_min_px,
+      "residual movers: ... and |mean(r / sigma)| is at least this many level-0 pixels (a large "
+      "region's tiny common bias is not motion)",
+      Range{0, 1000});
   }
 };
 

@@ -1,0 +1,81 @@
+#include "dynamics/residual_movers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace dynanav {
+
+namespace {
+struct DisjointSets {
+  std::vector<int> parent;
+  explicit DisjointSets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+/// The median normalised residual of the young keypoints outside `region` (zero if fewer than
+/// `min_points`). Young points share their keyframe's pose error, which the established points
+/// do not: all of them then show a common offset, which is not motion.
+Eigen::Vector2d othersOffset(const std::vector<int>& young, const std::vector<int>& region,
+                             const std::vector<MapResidual>& residuals, int min_points) {
+  std::vector<double> u, v;
+  for (const int i : young) {
+    if (std::binary_search(region.begin(), region.end(), i)) continue;
+    u.push_back(residuals[i].du_px / residuals[i].sigma_px);
+    v.push_back(residuals[i].dv_px / residuals[i].sigma_px);
+  }
+  if (static_cast<int>(u.size()) < min_points) return Eigen::Vector2d::Zero();
+  auto median = [](std::vector<double>& x) {
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    return x[x.size() / 2];
+  };
+  return {median(u), median(v)};
+}
+}  // namespace
+
+ResidualMovers findResidualMovers(const Frame& frame, const std::vector<MapResidual>& residuals,
+                                  const DynamicsConfig& config) {
+  ResidualMovers out;
+  const Features& f = frame.features;
+  std::vector<int> young;  // keypoint indices
+  for (int i = 0; i < frame.size() && i < static_cast<int>(residuals.size()); ++i)
+    if (residuals[i].valid && residuals[i].young && f.depth_m[i] > 0.f) young.push_back(i);
+  const int n = static_cast<int>(young.size());
+  if (n < config.residual_region_min_points) return out;
+  const double radius2 = config.residual_region_radius_px * config.residual_region_radius_px;
+  DisjointSets sets(n);
+  for (int a = 0; a < n; ++a) {
+    const cv::Point2f& pa = f.points[young[a]];
+    for (int b = a + 1; b < n; ++b) {
+      const cv::Point2f d = f.points[young[b]] - pa;
+      if (double(d.x) * d.x + double(d.y) * d.y > radius2) continue;
+      if (std::abs(f.depth_m[young[a]] - f.depth_m[young[b]]) > config.residual_region_depth_band_m)
+        continue;
+      sets.join(a, b);
+    }
+  }
+  std::vector<std::vector<int>> regions(n);
+  for (int a = 0; a < n; ++a) regions[sets.find(a)].push_back(young[a]);
+  for (const std::vector<int>& region : regions) {
+    const int count = static_cast<int>(region.size());
+    if (count < config.residual_region_min_points) continue;
+    const Eigen::Vector2d offset =
+        othersOffset(young, region, residuals, config.residual_region_min_points);
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();  // in units of each keypoint's sigma
+    for (const int i : region)
+      mean += Eigen::Vector2d(residuals[i].du_px, residuals[i].dv_px) / residuals[i].sigma_px;
+    mean = mean / count - offset;
+    if (count * mean.squaredNorm() <= config.residual_region_chi2) continue;
+    if (mean.norm() < config.residual_region_min_px) continue;
+    ++out.regions;
+    out.keypoints.insert(out.keypoints.end(), region.begin(), region.end());
+  }
+  std::sort(out.keypoints.begin(), out.keypoints.end());
+  return out;
+}
+
+}  // namespace dynanav
