@@ -434,8 +434,16 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.filter.velocity().norm() - track.filter.velocitySigma() > config_.static_speed_mps;
   const bool long_unmoved =
       track.still >= 3 * config_.static_after_frames && filterVelocityKnown(track) && !fast;
-  track.stationary =
-      verified_static || (track.still >= config_.static_after_frames && (slow || long_unmoved));
+  // A person held still has the filtered velocity held at zero, so only the points can show them
+  // setting off: as many frames in a row of clearly moving points as it took to be held still.
+  // Only people set off by themselves: a chair's or a box's rigid motion is mostly its mask's
+  // jitter (for every class, Bonn crowd's chairs were reported moving in more frames), and one
+  // that is pushed is found moving by the dynamics stage.
+  track.points_moving = v_measured && !isSlow(*v_measured) ? track.points_moving + 1 : 0;
+  const bool sets_off =
+      track.class_name == "person" && track.points_moving >= config_.static_after_frames;
+  track.stationary = verified_static || (!sets_off && track.still >= config_.static_after_frames &&
+                                         (slow || long_unmoved));
   if (track.stationary) {
     track.filter.holdStill();
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.

@@ -58,6 +58,7 @@ class ObjectTracker {
     int missed = 0;
     int still = 0;            // frames in a row not found moving
     bool stationary = false;  // reported with zero velocity
+    int points_moving = 0;    // frames in a row whose points' rigid motion was not slow
     int inliers = 0;
     int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
     // > 0: every centre the filter has heard came from the height range (height_range.hpp), so
