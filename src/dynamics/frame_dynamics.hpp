@@ -8,7 +8,7 @@ namespace dynanav {
 
 struct FrameDynamics {
   int keypoints = 0;          ///< extracted (already outside prior-dynamic masks)
-  int dynamic_keypoints = 0;  ///< made unusable by the depth test / instance vote
+  int dynamic_keypoints = 0;  ///< made unusable: depth test / instance vote / residual movers
   int static_keypoints = 0;   ///< usable after the test
   int prior_instances = 0;    ///< people etc. in this frame (cut out of extraction)
   int moving_instances =

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "slam/pose_optimizer.hpp"
+#include "slam/frame_tracker.hpp"
 
 namespace dynanav {
 
@@ -15,35 +15,6 @@ bool usableMatch(const Frame& frame, int i) {
 
 bool isYoung(const MapPoint& point) {
   return point.observations.size() < 2;
-}
-
-/// The frame's pose refitted (robustly, from its current pose) to the matches whose point is
-/// young (`young`) or established; false if fewer than `min_matches` are inliers. (A pose refitted
-/// to the young points was tried to absorb their keyframe's common error: it absorbs a near
-/// mover among them too, as the frame's own pose does.)
-bool refitPose(const Frame& frame, bool young, const TrackingConfig& config, int min_matches,
-               SE3& T_camera_world) {
-  const Features& f = frame.features;
-  std::vector<PoseObservation> observations;
-  for (int i = 0; i < frame.size(); ++i) {
-    if (!usableMatch(frame, i) || isYoung(*frame.map_points[i]) != young) continue;
-    PoseObservation obs;
-    obs.p_world = frame.map_points[i]->p_world;
-    obs.u = f.points[i].x;
-    obs.v = f.points[i].y;
-    obs.u_right = f.u_right[i];
-    obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
-    observations.push_back(obs);
-  }
-  if (static_cast<int>(observations.size()) < min_matches) return false;
-  const PinholeCamera& cam = *f.camera;
-  const PoseCamera camera{cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
-  PoseOptimizerOptions options;
-  options.rounds = config.pose_rounds;
-  options.iterations_per_round = config.pose_iterations;
-  T_camera_world = frame.T_camera_world;
-  std::vector<uint8_t> outlier;
-  return optimizePose(observations, camera, options, T_camera_world, outlier) >= min_matches;
 }
 
 Eigen::Vector2d residualPx(const Frame& frame, int i, const SE3& T_camera_world) {
@@ -60,8 +31,16 @@ std::vector<MapResidual> residualsToEstablishedPoints(const Frame& frame,
   std::vector<MapResidual> residuals(frame.size());
   const Features& f = frame.features;
   const int min_matches = std::max(1, min_established);
+  if (!f.camera || !f.scales) return residuals;
+  // The frame's pose refitted (robustly) to the established points alone. (A pose refitted to
+  // the young points, to absorb their keyframe's common error, was tried: it absorbs a near
+  // mover among them too, as the frame's own pose does.)
+  const auto established = [&](int i) {
+    return usableMatch(frame, i) && !isYoung(*frame.map_points[i]);
+  };
   SE3 T_established;
-  if (!f.camera || !f.scales || !refitPose(frame, false, config, min_matches, T_established))
+  std::vector<uint8_t> outlier;
+  if (optimizePoseOver(frame, config, established, T_established, outlier) < min_matches)
     return residuals;
   for (int i = 0; i < frame.size(); ++i) {
     if (!usableMatch(frame, i)) continue;

@@ -1,19 +1,23 @@
 #include "slam/frame_tracker.hpp"
 
+#include <functional>
+
 #include "slam/matcher.hpp"
 #include "slam/pose_optimizer.hpp"
 
 namespace dynanav {
 
-int optimizeFramePose(Frame& frame, const TrackingConfig& config) {
+int optimizePoseOver(const Frame& frame, const TrackingConfig& config,
+                     const std::function<bool(int)>& use, SE3& T_camera_world,
+                     std::vector<uint8_t>& outlier) {
   const Features& f = frame.features;
   const PinholeCamera& cam = *f.camera;
   std::vector<PoseObservation> observations;
   std::vector<int> keypoint_of;
+  outlier.assign(frame.size(), 0);
   for (int i = 0; i < frame.size(); ++i) {
     const MapPointPtr& point = frame.map_points[i];
-    frame.outlier[i] = 0;
-    if (!point) continue;
+    if (!point || !use(i)) continue;
     PoseObservation obs;
     obs.p_world = point->p_world;
     obs.u = f.points[i].x;
@@ -27,10 +31,16 @@ int optimizeFramePose(Frame& frame, const TrackingConfig& config) {
   PoseOptimizerOptions options;
   options.rounds = config.pose_rounds;
   options.iterations_per_round = config.pose_iterations;
-  std::vector<uint8_t> outlier;
-  const int inliers = optimizePose(observations, camera, options, frame.T_camera_world, outlier);
-  for (size_t k = 0; k < keypoint_of.size(); ++k) frame.outlier[keypoint_of[k]] = outlier[k];
+  T_camera_world = frame.T_camera_world;
+  std::vector<uint8_t> used_outlier;
+  const int inliers = optimizePose(observations, camera, options, T_camera_world, used_outlier);
+  for (size_t k = 0; k < keypoint_of.size(); ++k) outlier[keypoint_of[k]] = used_outlier[k];
   return inliers;
+}
+
+int optimizeFramePose(Frame& frame, const TrackingConfig& config) {
+  return optimizePoseOver(
+      frame, config, [](int) { return true; }, frame.T_camera_world, frame.outlier);
 }
 
 int discardOutliers(Frame& frame) {
@@ -95,7 +105,8 @@ int trackLocalMap(Frame& frame, const std::map<uint64_t, KeyFramePtr>& keyframes
     }
   }
   if (to_match > 0) {
-    matcher::matchLocalPoints(frame, local.points, static_cast<float>(config.local_search_radius_factor),
+    matcher::matchLocalPoints(frame, local.points,
+                              static_cast<float>(config.local_search_radius_factor),
                               static_cast<float>(config.local_nn_ratio));
   }
   optimizeFramePose(frame, config);

@@ -2,7 +2,9 @@
 // The three ways to pose a frame (ORB-SLAM2 Tracking): from the constant-velocity motion model,
 // from the reference keyframe by descriptor matching, and refined against the local map. Each is
 // a function of explicit inputs; the Tracker decides which to call.
+#include <functional>
 #include <map>
+#include <vector>
 
 #include "core/config/tracking.hpp"
 #include "slam/frame.hpp"
@@ -14,6 +16,13 @@ namespace dynanav {
 /// Pose-only optimisation of the frame against its matched map points (sets frame.outlier).
 /// Returns the number of inliers.
 int optimizeFramePose(Frame& frame, const TrackingConfig& config);
+
+/// The same against only the matches `use(keypoint)` accepts, starting at the frame's pose, which
+/// is not changed: the refined pose goes to `T_camera_world`, each keypoint's outlier flag to
+/// `outlier` (0 for matches not used). Returns the number of inliers.
+int optimizePoseOver(const Frame& frame, const TrackingConfig& config,
+                     const std::function<bool(int)>& use, SE3& T_camera_world,
+                     std::vector<uint8_t>& outlier);
 
 /// Drops outlier matches; returns how many matches to real map points (with observations) are left.
 int discardOutliers(Frame& frame);
