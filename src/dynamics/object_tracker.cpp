@@ -72,8 +72,11 @@ double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv
 
 }  // namespace
 
-ObjectTracker::ObjectTracker(const ObjectTrackingConfig& config, int sample_step_px)
-    : config_(config), sample_step_px_(sample_step_px) {}
+ObjectTracker::ObjectTracker(const ObjectTrackingConfig& config, int sample_step_px,
+                             std::vector<std::string> prior_dynamic_classes)
+    : config_(config),
+      sample_step_px_(sample_step_px),
+      prior_dynamic_classes_(std::move(prior_dynamic_classes)) {}
 
 std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input) {
   const cv::Size size = input.depth_m.size();
@@ -415,6 +418,11 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   if (instance) {
     const bool moving = contains(input.dynamics.moving_ids, instance->id);
     track.still = moving ? 0 : track.still + 1;
+  } else if (!track.prior_dynamic) {
+    // Missed by the segmenter and carried by its flow points: no evidence that it moves, which
+    // an object that does not move by itself needs (Bonn's chairs, missed every few frames,
+    // were carried as moving on flow dragged by the walkers passing in front).
+    ++track.still;
   }
   // Not found moving for a while and measured slow, or not found moving for three times as
   // long: static (a verdict that flickers off for a few frames of a walker does not stop it;
@@ -436,14 +444,18 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.still >= 3 * config_.static_after_frames && filterVelocityKnown(track) && !fast;
   // A person held still has the filtered velocity held at zero, so only the points can show them
   // setting off: as many frames in a row of clearly moving points as it took to be held still.
-  // Only people set off by themselves: a chair's or a box's rigid motion is mostly its mask's
-  // jitter (for every class, Bonn crowd's chairs were reported moving in more frames), and one
-  // that is pushed is found moving by the dynamics stage.
+  // Only prior-dynamic classes (people, animals) set off by themselves: a chair's or a box's rigid
+  // motion is mostly its mask's jitter (for every class, Bonn crowd's chairs were reported moving
+  // in more frames), and one that is pushed is found moving by the dynamics stage.
   track.points_moving = v_measured && !isSlow(*v_measured) ? track.points_moving + 1 : 0;
-  const bool sets_off =
-      track.class_name == "person" && track.points_moving >= config_.static_after_frames;
+  const bool sets_off = track.prior_dynamic && track.points_moving >= config_.static_after_frames;
+  // An object that does not move by itself is static once the dynamics stage has not found it
+  // moving for a while, unless its own velocity is clearly fast: its points' jitter says little
+  // (Bonn crowd's chairs: most of their frames reported moving came from that jitter and from a
+  // new track's unknown velocity).
+  const bool unmoved_object = !track.prior_dynamic && !fast;
   track.stationary = verified_static || (!sets_off && track.still >= config_.static_after_frames &&
-                                         (slow || long_unmoved));
+                                         (slow || long_unmoved || unmoved_object));
   if (track.stationary) {
     track.filter.holdStill();
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.
@@ -476,9 +488,13 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
                       centre->cov_world);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
+  t.prior_dynamic = std::find(prior_dynamic_classes_.begin(), prior_dynamic_classes_.end(),
+                              instance.class_name) != prior_dynamic_classes_.end();
   // Placed by its height: no verdict to go by (update's static rule for such tracks).
   t.still = moving || t.ranged_scale_sigma > 0.0 ? 0 : 1;
-  if (contains(input.dynamics.static_ids, instance.id)) t.still = config_.static_after_frames;
+  // A person is taken as moving until found still; a chair as static until found moving.
+  if (contains(input.dynamics.static_ids, instance.id) || (!t.prior_dynamic && !moving))
+    t.still = config_.static_after_frames;
   t.stationary = t.still >= config_.static_after_frames;
   t.id = next_id_++;
   return t;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "core/config/dynamics.hpp"
 #include "core/config/objects.hpp"
 #include "core/se3.hpp"
 #include "core/tracked_object.hpp"
@@ -37,7 +38,11 @@ struct ObjectTrackerInput {
 
 class ObjectTracker {
  public:
-  ObjectTracker(const ObjectTrackingConfig& config, int sample_step_px);
+  /// `prior_dynamic_classes`: classes that move by themselves (people): a track of another class
+  /// (a chair, a box) is static until the dynamics stage finds it moving.
+  ObjectTracker(
+      const ObjectTrackingConfig& config, int sample_step_px,
+      std::vector<std::string> prior_dynamic_classes = DynamicsConfig{}.prior_dynamic_classes);
   std::vector<TrackedObject> track(const ObjectTrackerInput& input);
   [[nodiscard]] size_t liveTracks() const { return tracks_.size(); }
 
@@ -45,6 +50,7 @@ class ObjectTracker {
   struct Track {
     uint64_t id = 0;
     std::string class_name;
+    bool prior_dynamic = true;        // a class that moves by itself (prior_dynamic_classes)
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
     // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
@@ -103,6 +109,7 @@ class ObjectTracker {
 
   ObjectTrackingConfig config_;
   int sample_step_px_ = 5;
+  std::vector<std::string> prior_dynamic_classes_;
   uint64_t next_id_ = 1;
   std::vector<Track> tracks_;  // ordered by id
   cv::Mat previous_labels_;

@@ -40,7 +40,8 @@ System::System(const Config& config, const PinholeCamera& camera,
     segmenter_name_ = segmenter_->name();
     verifier_ = std::make_unique<PriorVerifier>(config.dynamics);
     if (config.objects.enabled)
-      tracker_ = std::make_unique<ObjectTracker>(config.objects, config.dynamics.sample_step_px);
+      tracker_ = std::make_unique<ObjectTracker>(config.objects, config.dynamics.sample_step_px,
+                                                 config.dynamics.prior_dynamic_classes);
     if (config.objects.enabled && config.assist.enabled)
       feedback_ = std::make_unique<FeedbackStage>(config.assist);
   }
