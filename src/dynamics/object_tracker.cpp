@@ -357,8 +357,12 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // crossing walk), which no number of frames averages out; the centres' error is not.
     const bool whole = instance && !centre->cov_world;
     track.whole_centre_frames = whole ? track.whole_centre_frames + 1 : 0;
+    // A rigid object (a class that does not move by itself: a pushed box, a chair) has no such
+    // bias: its flow follows its texture, while its centre, pushed behind the visible surface
+    // along a viewing ray that turns as it moves, reads fast. Its rigid motion always enters.
     const bool use_motion = config_.motion_velocity_frames < 0 || !whole ||
-                            track.whole_centre_frames <= config_.motion_velocity_frames;
+                            track.whole_centre_frames <= config_.motion_velocity_frames ||
+                            !track.prior_dynamic;
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
     std::optional<Mat3> cov_world = centre->cov_world;

@@ -222,15 +222,19 @@ TEST(ObjectTracker, SidewaysObjectWhoseFlowUnderReadsGetsItsSpeedFromItsCentre) 
   std::vector<TrackedObject> out;
   for (int i = 0; i < 100; ++i) {
     SynthFrame f = frame({x}, {true}, i > 0);
+    f.instances.items[0].class_name = "person";
     if (i > 0) f.flow_half.setTo(cv::Scalar(0.5f * kPixelsPerFrame / 2, 0.f));
     out = step(tracker, f, i);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i == 0) EXPECT_FALSE(out[0].velocity_known) << "a new track has no velocity yet";
     if (i >= 70) {
       EXPECT_TRUE(out[0].velocity_known) << "frame " << i;
-      // 0.03: the centre lies behind the surface along the viewing ray (half the 0.23 m visible
-      // width), and the ray turns as the object moves: the centre reads 0.116 / 2.03 = 6 % fast.
-      EXPECT_NEAR(out[0].speed_mps, expected, 0.03) << "frame " << i;
+      // Not below: a blend with the flow would end low. Up to 0.045 above: a person's centre lies
+      // 0.15 m behind the surface along the viewing ray, and the ray turns as the object moves,
+      // so the centre reads ~0.18 / 2.03 = 9 % fast. (A rigid object's flow is not biased so,
+      // and its rigid motion keeps entering the filter: the class is a person's here.)
+      EXPECT_GT(out[0].speed_mps, expected - 0.005) << "frame " << i;
+      EXPECT_LT(out[0].speed_mps, expected + 0.045) << "frame " << i;
       const double error_x = out[0].v_world_mps.x() - expected;
       EXPECT_LT(std::abs(error_x), 3.0 * std::sqrt(out[0].covariance(3, 3))) << "frame " << i;
     }
@@ -368,4 +372,26 @@ TEST(ObjectTracker, AnObjectThatDoesNotMoveByItselfIsStaticUntilFoundMoving) {
       EXPECT_TRUE(i <= 20 + config.static_after_frames || !out[0].dynamic) << "frame " << i;
     }
   }
+}
+
+TEST(ObjectTracker, ARigidObjectKeepsItsRigidMotionsSpeed) {
+  // A box sliding sideways with flow that reads its motion exactly. Its centre lies half its
+  // visible width behind the surface along the viewing ray, which turns as it moves: the centres
+  // alone read 6 % fast. A rigid object's flow has no smooth-clothes bias, so its
+  // rigid motion keeps entering the filter and holds the speed at the truth.
+  ObjectTrackingConfig config;
+  config.accel_sigma_mps2 = 0.5;
+  ObjectTracker tracker(config, 5);
+  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  float x = 100.f;
+  double sum = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const auto out = step(tracker, frame({x}, {true}, i > 0), i);
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i >= 70) sum += out[0].speed_mps;
+    x += kPixelsPerFrame;
+  }
+  // Mean of frames 70-99 (this block's relief makes single frames swing by +-0.01): 0.358 m/s;
+  // the centres taking over after motion_velocity_frames, as for a person, give 0.362.
+  EXPECT_NEAR(sum / 30.0, expected, 0.012);
 }
