@@ -48,10 +48,18 @@ ResidualMovers findResidualMovers(const Frame& frame, const std::vector<MapResid
   if (n < config.residual_region_min_points) return out;
   const double radius2 = config.residual_region_radius_px * config.residual_region_radius_px;
   DisjointSets sets(n);
-  for (int a = 0; a < n; ++a) {
+  // Pairs within the radius, found along the points sorted by column (a sweep, not all pairs).
+  std::vector<int> by_x(n);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::sort(by_x.begin(), by_x.end(),
+            [&](int a, int b) { return f.points[young[a]].x < f.points[young[b]].x; });
+  for (int ia = 0; ia < n; ++ia) {
+    const int a = by_x[ia];
     const cv::Point2f& pa = f.points[young[a]];
-    for (int b = a + 1; b < n; ++b) {
+    for (int ib = ia + 1; ib < n; ++ib) {
+      const int b = by_x[ib];
       const cv::Point2f d = f.points[young[b]] - pa;
+      if (double(d.x) > config.residual_region_radius_px) break;
       if (double(d.x) * d.x + double(d.y) * d.y > radius2) continue;
       if (std::abs(f.depth_m[young[a]] - f.depth_m[young[b]]) > config.residual_region_depth_band_m)
         continue;
