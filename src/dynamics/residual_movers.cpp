@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+
+#include "dynamics/keypoint_dynamics.hpp"
 
 namespace dynanav {
 
@@ -83,6 +86,40 @@ ResidualMovers findResidualMovers(const Frame& frame, const std::vector<MapResid
     out.keypoints.insert(out.keypoints.end(), region.begin(), region.end());
   }
   std::sort(out.keypoints.begin(), out.keypoints.end());
+  return out;
+}
+
+ResidualInstances findResidualInstances(const Frame& frame,
+                                        const std::vector<MapResidual>& background_residuals,
+                                        const Instances& instances, const DynamicsConfig& config) {
+  ResidualInstances out;
+  const Features& f = frame.features;
+  if (instances.empty() || f.instance_id.size() != f.keypoints.size()) return out;
+  std::map<uint16_t, std::vector<Eigen::Vector2d>> normalised;  // instance -> r / sigma
+  const int n = std::min(frame.size(), static_cast<int>(background_residuals.size()));
+  for (int i = 0; i < n; ++i) {
+    const MapResidual& r = background_residuals[i];
+    if (r.valid && f.instance_id[i] != 0)
+      normalised[f.instance_id[i]].emplace_back(r.du_px / r.sigma_px, r.dv_px / r.sigma_px);
+  }
+  for (auto& [id, values] : normalised) {
+    const Instance* instance = instances.find(id);
+    const int count = static_cast<int>(values.size());
+    if (!instance || isPriorDynamic(*instance, config) || count < config.residual_region_min_points)
+      continue;
+    std::vector<double> u, v;
+    for (const Eigen::Vector2d& x : values) u.push_back(x.x()), v.push_back(x.y());
+    std::nth_element(u.begin(), u.begin() + count / 2, u.end());
+    std::nth_element(v.begin(), v.begin() + count / 2, v.end());
+    const Eigen::Vector2d median(u[count / 2], v[count / 2]);
+    if (count * (2.0 / M_PI) * median.squaredNorm() > config.residual_region_chi2 &&
+        median.norm() >= config.residual_region_min_px)
+      out.ids.push_back(id);
+  }
+  // The instance decides for all its keypoints, those without a match too (as the depth vote).
+  for (int i = 0; i < frame.size(); ++i)
+    if (f.instance_id[i] && std::binary_search(out.ids.begin(), out.ids.end(), f.instance_id[i]))
+      out.keypoints.push_back(i);
   return out;
 }
 

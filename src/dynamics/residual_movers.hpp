@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/config/dynamics.hpp"
+#include "perception/instances.hpp"
 #include "slam/established_residuals.hpp"
 #include "slam/frame.hpp"
 
@@ -35,5 +36,23 @@ struct ResidualMovers {
 /// residual_region_min_px.
 ResidualMovers findResidualMovers(const Frame& frame, const std::vector<MapResidual>& residuals,
                                   const DynamicsConfig& config);
+
+/// A non-prior instance moving sideways (a box pushed across the view) keeps its depth, so the
+/// depth vote passes it, while its established map points (it stood still while mapped) pull
+/// the frame's pose along until scene flow, measured against that pose, finds it (the simulated
+/// pushed box dragged the camera 17 cm in 5 frames). Against the background's own pose
+/// (slam/established_residuals.hpp, residualsToBackground) its matches show the motion.
+struct ResidualInstances {
+  std::vector<uint16_t> ids;   ///< instances found moving, ascending
+  std::vector<int> keypoints;  ///< all their keypoints, ascending
+};
+
+/// For every instance of `instances` outside dynamics.prior_dynamic_classes with at least
+/// residual_region_min_points matches valid in `background_residuals`: it moves when the
+/// median r/σ of its matches (robust to the false matches among them: its variance is π/2 the
+/// mean's) passes n·(2/π)·|median|² > residual_region_chi2 and |median| ≥ residual_region_min_px.
+ResidualInstances findResidualInstances(const Frame& frame,
+                                        const std::vector<MapResidual>& background_residuals,
+                                        const Instances& instances, const DynamicsConfig& config);
 
 }  // namespace dynanav

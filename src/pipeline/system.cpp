@@ -66,8 +66,9 @@ FrameResult System::process(const RgbdFrame& input) {
   TrackOutcome outcome;
   {
     ScopedTimer timer(timers_, "tracking");
-    InitialPose initial = slam_->initialPose(frame);                        // 4. initial pose
-    if (initial.ok) rejectMovers(input, initial, frame, *result.dynamics);  // 5. movers dropped
+    InitialPose initial = slam_->initialPose(frame);  // 4. initial pose
+    if (initial.ok)
+      rejectMovers(input, initial, frame, result.instances, *result.dynamics);  // 5. movers out
     outcome = slam_->trackLocalMap(frame, std::move(initial));  // 6. local map, static points
   }
   verifyPriors(prep, input, frame, outcome, result);  // 7. scene flow: moving or not
@@ -115,7 +116,7 @@ Frame System::extractFeatures(const PreparedFrame& prep, const RgbdFrame& input,
 }
 
 void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Frame& frame,
-                          FrameDynamics& record) {
+                          const Instances& instances, FrameDynamics& record) {
   depth_voted_.clear();
   if (!dynamic_) return;
   // The depth test looks as far as the camera's motion may have misregistered a keypoint.
@@ -125,15 +126,29 @@ void System::rejectMovers(const RgbdFrame& input, const InitialPose& initial, Fr
                                depthTestTimeSpread(exposure_s, input.stamp_s, input.depth_stamp_s),
                                initial.retime ? initial.readout_s : 0.0};
   const DynamicsConfig& dynamics = config_.dynamics;
-  const MapPointChecks checks =
-      slam_->moverChecks(frame, dynamics.moving_evidence,
-                         dynamics.residual_movers ? dynamics.residual_min_established : 0);
+  // Objects found by the segmenter but not (yet) found moving: judged against the background.
+  const bool judge_instances =
+      dynamics.residual_movers && dynamics.residual_instances &&
+      std::any_of(instances.items.begin(), instances.items.end(),
+                  [&](const Instance& instance) { return !isPriorDynamic(instance, dynamics); });
+  const MapPointChecks checks = slam_->moverChecks(
+      frame, dynamics.moving_evidence,
+      dynamics.residual_movers ? dynamics.residual_min_established : 0, judge_instances);
   MoverVerdict verdict =
       findDepthMovers(frame, checks.predicted_depth_m, dynamics, motion, checks.moving_evidence);
   if (dynamics.residual_movers) {  // movers the segmenter missed, moving sideways
     const ResidualMovers residual = findResidualMovers(frame, checks.residuals, dynamics);
     addDrops(verdict.drop, residual.keypoints, false);
     record.residual_regions += residual.regions;
+  }
+  if (judge_instances) {  // objects pushed sideways
+    const ResidualInstances moved =
+        findResidualInstances(frame, checks.background_residuals, instances, dynamics);
+    addDrops(verdict.drop, moved.keypoints, dynamics.cull_moving_object_points);
+    auto& ids = verdict.moving_instances;
+    ids.insert(ids.end(), moved.ids.begin(), moved.ids.end());
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   }
   record.culled_points += slam_->applyDrop(frame, verdict.drop);
   record.dynamic_keypoints += static_cast<int>(verdict.drop.drop.size());

@@ -54,7 +54,7 @@ class System {
   Frame extractFeatures(const PreparedFrame& prep, const RgbdFrame& input, const cv::Mat& allowed,
                         const Instances& instances);
   void rejectMovers(const RgbdFrame& input, const InitialPose& initial, Frame& frame,
-                    FrameDynamics& record);
+                    const Instances& instances, FrameDynamics& record);
   void verifyPriors(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,
                     const TrackOutcome& outcome, FrameResult& result);
   void trackObjects(const PreparedFrame& prep, const RgbdFrame& input, const Frame& frame,

@@ -15,8 +15,11 @@
 namespace dynanav {
 
 struct MapResidual {
-  bool valid = false;    ///< a usable match, and a pose refitted to enough established points
-  bool young = false;    ///< its map point is observed by fewer than two keyframes
+  bool valid = false;  ///< a usable match, and a pose refitted to enough established points
+  bool young = false;  ///< its map point is observed by fewer than two keyframes
+  /// The frame's own pose optimisation rejected the match (a mover's point, or a false match);
+  /// only residualsToBackground() measures such matches.
+  bool outlier = false;
   float du_px = 0.f;     ///< measured minus projected pixel, undistorted (x)
   float dv_px = 0.f;     ///< (y)
   float sigma_px = 1.f;  ///< the keypoint's pyramid level's pixel sigma
@@ -29,5 +32,15 @@ struct MapResidual {
 std::vector<MapResidual> residualsToEstablishedPoints(const Frame& frame,
                                                       const TrackingConfig& config,
                                                       int min_established);
+
+/// Per keypoint of `frame` with a match (its own pose's outliers too): its residual under the
+/// frame's pose refitted to the established points outside every instance (keypoint
+/// instance_id 0: the background). An object the segmenter outlines but nobody has found moving
+/// yet (a box pushed sideways) has established points that can pull the frame's own pose, and
+/// with it the pose refitted to all established points; the background's pose shows it. All
+/// invalid when fewer than `min_established` background points are matched. The caller holds
+/// the map lock.
+std::vector<MapResidual> residualsToBackground(const Frame& frame, const TrackingConfig& config,
+                                               int min_established);
 
 }  // namespace dynanav

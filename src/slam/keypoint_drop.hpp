@@ -30,6 +30,7 @@ struct MapPointChecks {
   std::vector<float> predicted_depth_m;  ///< predictedMapPointDepths()
   std::vector<float> moving_evidence;    ///< mapPointMovingEvidence(), or empty when not asked
   std::vector<MapResidual> residuals;    ///< residualsToEstablishedPoints(), or empty
+  std::vector<MapResidual> background_residuals;  ///< residualsToBackground(), or empty
 };
 
 /// Adds `keypoints` (ascending) to `drop`'s drop list, keeping it ascending and unique; a keypoint

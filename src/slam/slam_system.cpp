@@ -68,7 +68,7 @@ InitialPose SlamSystem::initialPose(Frame& frame) {
 }
 
 MapPointChecks SlamSystem::moverChecks(const Frame& frame, bool evidence,
-                                       int residual_min_established) const {
+                                       int residual_min_established, bool background) const {
   std::unique_lock lock(map_->mutex());  // local BA moves points in real-time mode
   MapPointChecks checks;
   checks.predicted_depth_m = predictedMapPointDepths(frame);
@@ -76,6 +76,9 @@ MapPointChecks SlamSystem::moverChecks(const Frame& frame, bool evidence,
   if (residual_min_established > 0)
     checks.residuals =
         residualsToEstablishedPoints(frame, config_.tracking, residual_min_established);
+  if (residual_min_established > 0 && background)
+    checks.background_residuals =
+        residualsToBackground(frame, config_.tracking, residual_min_established);
   return checks;
 }
 

@@ -45,9 +45,11 @@ class SlamSystem {
   /// For 5, under one map lock: the depth of each keypoint's matched map point in the frame's
   /// camera (0 = no usable match); with `evidence`, each point's moving evidence (NaN = none);
   /// with `residual_min_established` > 0, each match's residual against a pose refitted to the
-  /// established points (slam/established_residuals.hpp).
+  /// established points (slam/established_residuals.hpp), and with `background` too against a
+  /// pose refitted to the established points outside every instance.
   [[nodiscard]] MapPointChecks moverChecks(const Frame& frame, bool evidence,
-                                           int residual_min_established) const;
+                                           int residual_min_established,
+                                           bool background = false) const;
   /// 5. Applies mover rejection's decision; returns the map points culled.
   int applyDrop(Frame& frame, const KeypointDrop& drop);
   /// 6. Local-map tracking on the static points left, and the keyframe decision.

@@ -186,3 +186,97 @@ TEST(KeypointDropMerge, AddDropsKeepsTheListAscendingUniqueAndCullsIfEitherAsks)
   addDrops(drop, {2}, true);
   EXPECT_EQ(drop.cull_on_drop, (std::vector<bool>{false, true, true, false, false}));
 }
+
+namespace {
+/// A frame at the identity seeing 32 established background points where they are and an
+/// object (instance 1, `object` points at 1.5 m, established too: it stood still while mapped)
+/// that moved `moved_px` to the right since. The object has more matches than the background,
+/// so the frame's own optimisation followed it and rejected the background (outlier flags).
+struct ObjectScene {
+  Frame frame;
+  Instances instances;
+  std::vector<std::shared_ptr<KeyFrame>> keyframes;
+};
+
+ObjectScene objectScene(int object, float moved_px, const std::string& class_name = "box") {
+  ObjectScene s;
+  auto camera = std::make_shared<PinholeCamera>();
+  auto scales = std::make_shared<PyramidScales>(PyramidScales::fromConfig(OrbConfig{}));
+  Features f;
+  f.camera = camera;
+  f.scales = scales;
+  const int n = 32 + object;
+  std::vector<Vec3> world;
+  for (int i = 0; i < n; ++i) {
+    const bool on_object = i >= 32;
+    const int k = on_object ? i - 32 : i;
+    const double z = on_object ? 1.5 : 2.0 + 0.05 * i;
+    const double u = on_object ? 380 + 12 * (k % 8) : 40 + 70 * (k % 8);
+    const double v = on_object ? 150 + 15 * (k / 8) : 40 + 100 * (k / 8);
+    world.push_back(camera->backproject(u, v, z));
+    const float shift = on_object ? moved_px : 0.f;
+    f.keypoints.emplace_back(cv::Point2f(float(u) + shift, float(v)), 31.f);
+    f.points.emplace_back(float(u) + shift, float(v));
+    f.depth_m.push_back(static_cast<float>(z));
+    f.u_right.push_back(-1.f);
+    f.usable.push_back(1);
+    f.instance_id.push_back(on_object ? 1 : 0);
+  }
+  s.frame = Frame(9, 0.3, f);
+  for (int k = 0; k < 2; ++k)
+    s.keyframes.push_back(
+        std::make_shared<KeyFrame>(k, k, 0.1 * k, f, SE3::Identity(), std::vector<MapPointPtr>(n)));
+  for (int i = 0; i < n; ++i) {
+    auto point = std::make_shared<MapPoint>(i, world[i], s.keyframes[0].get());
+    for (auto& kf : s.keyframes) point->addObservation(kf.get(), i);
+    s.frame.map_points[i] = point;
+    s.frame.outlier[i] = i < 32 && moved_px != 0.f;
+  }
+  // The pose the object pulled: its 6 px at 1.5 m are 1.7 cm.
+  s.frame.T_camera_world = makeSE3(Quat::Identity(), Vec3(moved_px * 1.5 / camera->fx, 0, 0));
+  s.instances = Instances::none(cv::Size(640, 480));
+  Instance it;
+  it.id = 1;
+  it.class_name = class_name;
+  it.box = cv::Rect(370, 140, 110, 90);
+  s.instances.items.push_back(it);
+  return s;
+}
+}  // namespace
+
+TEST(ResidualInstances, AnObjectThatPulledThePoseMovesAgainstTheBackground) {
+  const ObjectScene s = objectScene(40, 6.f);
+  const std::vector<MapResidual> r = residualsToBackground(s.frame, TrackingConfig{}, 30);
+  ASSERT_EQ(r.size(), 72u);
+  for (int i = 0; i < 72; ++i) {
+    ASSERT_TRUE(r[i].valid) << i << ": rejected matches are measured too";
+    EXPECT_NEAR(r[i].du_px, i >= 32 ? 6.f : 0.f, 0.05) << i;
+  }
+  // Against every established point the object's majority hides it (the old test's view).
+  const std::vector<MapResidual> all = residualsToEstablishedPoints(s.frame, TrackingConfig{}, 30);
+  EXPECT_LT(std::abs(all[40].du_px), 1.f);
+  const ResidualInstances moved = findResidualInstances(s.frame, r, s.instances, DynamicsConfig{});
+  EXPECT_EQ(moved.ids, (std::vector<uint16_t>{1}));
+  ASSERT_EQ(moved.keypoints.size(), 40u);
+  EXPECT_EQ(moved.keypoints.front(), 32);
+}
+
+TEST(ResidualInstances, StillObjectsPeopleAndSmallShiftsAreNotMoving) {
+  const DynamicsConfig c;
+  ObjectScene s = objectScene(40, 0.f);  // stood still
+  EXPECT_TRUE(findResidualInstances(s.frame, residualsToBackground(s.frame, TrackingConfig{}, 30),
+                                    s.instances, c)
+                  .ids.empty());
+  s = objectScene(40, 1.2f);  // significant but under residual_region_min_px
+  EXPECT_TRUE(findResidualInstances(s.frame, residualsToBackground(s.frame, TrackingConfig{}, 30),
+                                    s.instances, c)
+                  .ids.empty());
+  s = objectScene(40, 6.f, "person");  // prior-dynamic classes are the segmenter's to cut out
+  EXPECT_TRUE(findResidualInstances(s.frame, residualsToBackground(s.frame, TrackingConfig{}, 30),
+                                    s.instances, c)
+                  .ids.empty());
+  s = objectScene(4, 6.f);  // too few matches to judge
+  EXPECT_TRUE(findResidualInstances(s.frame, residualsToBackground(s.frame, TrackingConfig{}, 30),
+                                    s.instances, c)
+                  .ids.empty());
+}

@@ -38,6 +38,7 @@ struct DynamicsConfig {
   double moving_evidence_min = -2.0;
   double moving_evidence_max = 3.0;
   bool residual_movers = true;
+  bool residual_instances = true;
   int residual_min_established = 30;
   double residual_region_radius_px = 40.0;
   double residual_region_depth_band_m = 0.3;
@@ -146,6 +147,11 @@ struct DynamicsConfig {
       "young map points (one keyframe) that move together against a pose refitted to the "
       "established points are a mover the segmenter missed: their keypoints are dropped for the "
       "frame (dynamics/residual_movers.hpp)");
+    v("residual_instances", residual_instances,
+      "a non-prior instance (a chair, a box) whose matches move together against the pose "
+      "refitted to the established background points (outside every instance) is moving: cut out "
+      "and its map points culled, as by a depth vote (dynamics/residual_movers.hpp; needs "
+      "residual_movers)");
     v("residual_min_established", residual_min_established,
       "residual movers: fewest established points matched for the refitted pose (fewer: no test)",
       Range{1, 100000});
