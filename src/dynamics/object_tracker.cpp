@@ -363,6 +363,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool use_motion = config_.motion_velocity_frames < 0 || !whole ||
                             track.whole_centre_frames <= config_.motion_velocity_frames ||
                             !track.prior_dynamic;
+    // An object held still (its velocity clamped at zero, an assumption rather than a
+    // measurement) that the dynamics stage now finds moving has an unknown velocity again: the
+    // filter is told so, and the rigid motion measures it in a frame or two instead of a ramp
+    // from the clamped zero. (People set off on their points instead: session 10's rule.)
+    if (!track.prior_dynamic && track.stationary && instance &&
+        contains(input.dynamics.moving_ids, instance->id)) {
+      KalmanCv::Mat6 Q = KalmanCv::Mat6::Zero();
+      Q.bottomRightCorner<3, 3>() =
+          Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
+      track.filter.addCovariance(Q);
+    }
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
     std::optional<Mat3> cov_world = centre->cov_world;

@@ -395,3 +395,27 @@ TEST(ObjectTracker, ARigidObjectKeepsItsRigidMotionsSpeed) {
   // the centres taking over after motion_velocity_frames, as for a person, give 0.362.
   EXPECT_NEAR(sum / 30.0, expected, 0.012);
 }
+
+TEST(ObjectTracker, AHeldObjectFoundMovingReadsItsSpeedAtOnce) {
+  // A box stands (held still, its velocity clamped at zero) and is then pushed: from frame 10 it
+  // moves 3 px per frame and the dynamics stage finds it moving. Its velocity is unknown again,
+  // so within three frames the speed reads the push (a ramp from the clamped zero took ~8).
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  float x = 100.f;
+  for (int i = 0; i < 20; ++i) {
+    const bool pushed = i >= 10;
+    SynthFrame f = frame({x}, {true}, i > 0);
+    if (!pushed) f.flow_half.setTo(cv::Scalar(0.f, 0.f));
+    FrameDynamics dynamics;
+    if (pushed) dynamics.moving_ids.push_back(1);
+    const SE3 T = SE3::Identity();
+    const PinholeCamera cam = camera();
+    const auto out =
+        tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i == 9) EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
+    if (i >= 12) EXPECT_NEAR(out[0].speed_mps, expected, 0.08) << "frame " << i;
+    if (pushed) x += kPixelsPerFrame;
+  }
+}
