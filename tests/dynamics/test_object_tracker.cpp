@@ -11,6 +11,8 @@ namespace {
 
 constexpr int kW = 640, kH = 480;
 constexpr float kPixelsPerFrame = 3.f;
+/// The synthetic object's speed: kPixelsPerFrame at its 2.03 m mean depth, fx 525, 30 frames/s.
+constexpr double kSlideSpeedMps = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
 
 PinholeCamera camera() {
   PinholeCamera c;
@@ -82,7 +84,7 @@ TEST(ObjectTracker, KeepsIdThroughMissedFrameAndMeasuresSpeed) {
     x += kPixelsPerFrame;
   }
   // 3 px per frame at 2.03 m and fx 525, 30 frames/s: 0.35 m/s to the right.
-  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kSlideSpeedMps;
   EXPECT_NEAR(out[0].v_world_mps.x(), expected, 0.06);
   EXPECT_NEAR(out[0].speed_mps, expected, 0.08);
   EXPECT_TRUE(out[0].dynamic);
@@ -138,7 +140,7 @@ TEST(ObjectTracker, ObjectEnteringAtTheImageSideKeepsItsSpeed) {
   // moves at half its speed (the edge holds the left end). That sideways centre is unknown to the
   // filter; the rigid motion of its points gives the speed throughout.
   ObjectTracker tracker(ObjectTrackingConfig{}, 5);
-  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kSlideSpeedMps;
   float x = -45.f;
   std::vector<TrackedObject> out;
   for (int i = 0; i < 45; ++i) {
@@ -217,7 +219,7 @@ TEST(ObjectTracker, SidewaysObjectWhoseFlowUnderReadsGetsItsSpeedFromItsCentre) 
   ObjectTrackingConfig config;
   config.accel_sigma_mps2 = 0.5;
   ObjectTracker tracker(config, 5);
-  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kSlideSpeedMps;
   float x = 100.f;
   std::vector<TrackedObject> out;
   for (int i = 0; i < 100; ++i) {
@@ -276,7 +278,7 @@ TEST(ObjectTracker, NotFoundMovingIsNotStaticWhileTheOwnVelocityIsFast) {
   // 3 x static_after_frames frames of "not found moving" and then held still.
   ObjectTracker tracker(ObjectTrackingConfig{}, 5);
   constexpr float kScale = 2.5f;
-  const double expected = kScale * kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kScale * kSlideSpeedMps;
   float x = 100.f;
   std::vector<TrackedObject> out;
   for (int i = 0; i < 40; ++i) {
@@ -307,7 +309,7 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
     ObjectTracker tracker(ObjectTrackingConfig{}, 5);
     constexpr float kScale = 2.5f;
     constexpr int kStart = 20;
-    const double expected = kScale * kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+    const double expected = kScale * kSlideSpeedMps;
     float x = 100.f;
     std::vector<TrackedObject> out;
     for (int i = 0; i < 50; ++i) {
@@ -382,7 +384,7 @@ TEST(ObjectTracker, ARigidObjectKeepsItsRigidMotionsSpeed) {
   ObjectTrackingConfig config;
   config.accel_sigma_mps2 = 0.5;
   ObjectTracker tracker(config, 5);
-  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kSlideSpeedMps;
   float x = 100.f;
   double sum = 0.0;
   for (int i = 0; i < 100; ++i) {
@@ -401,7 +403,7 @@ TEST(ObjectTracker, AHeldObjectFoundMovingReadsItsSpeedAtOnce) {
   // moves 3 px per frame and the dynamics stage finds it moving. Its velocity is unknown again,
   // so within three frames the speed reads the push (a ramp from the clamped zero took ~8).
   ObjectTracker tracker(ObjectTrackingConfig{}, 5);
-  const double expected = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
+  const double expected = kSlideSpeedMps;
   float x = 100.f;
   for (int i = 0; i < 20; ++i) {
     const bool pushed = i >= 10;
