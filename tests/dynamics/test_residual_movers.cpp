@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "dynamics/residual_movers.hpp"
 #include "slam/keyframe.hpp"
@@ -103,6 +104,49 @@ TEST(ResidualMovers, RegionsAreSeparatedByDepth) {
 }
 
 namespace {
+/// Features with the default camera and ORB scales, no keypoint yet.
+Features cameraFeatures() {
+  Features f;
+  f.camera = std::make_shared<PinholeCamera>();
+  f.scales = std::make_shared<PyramidScales>(PyramidScales::fromConfig(OrbConfig{}));
+  return f;
+}
+
+/// A level-0 keypoint at (u + shift_px, v) with depth z in `instance`; returns where its map point
+/// lies in the world (the camera at the identity saw it at (u, v)).
+Vec3 addShiftedKeypoint(Features& f, double u, double v, double z, float shift_px,
+                        uint16_t instance = 0) {
+  f.keypoints.emplace_back(cv::Point2f(float(u) + shift_px, float(v)), 31.f);
+  f.points.emplace_back(float(u) + shift_px, float(v));
+  f.depth_m.push_back(static_cast<float>(z));
+  f.u_right.push_back(-1.f);
+  f.usable.push_back(1);
+  f.instance_id.push_back(instance);
+  return f.camera->backproject(u, v, z);
+}
+
+/// Two keyframes at the identity holding `f`; keypoint i of `frame` is matched to a map point at
+/// world[i] observed by the first observers(i) of them.
+std::vector<MapPointPtr> matchToMapPoints(Frame& frame, const Features& f,
+                                          const std::vector<Vec3>& world,
+                                          const std::function<int(int)>& observers,
+                                          std::vector<std::shared_ptr<KeyFrame>>& keyframes) {
+  const int n = static_cast<int>(world.size());
+  for (int k = 0; k < 2; ++k)
+    keyframes.push_back(
+        std::make_shared<KeyFrame>(k, k, 0.1 * k, f, SE3::Identity(), std::vector<MapPointPtr>(n)));
+  std::vector<MapPointPtr> points;
+  for (int i = 0; i < n; ++i) {
+    auto point = std::make_shared<MapPoint>(i, world[i], keyframes[0].get());
+    for (int k = 0; k < observers(i); ++k) point->addObservation(keyframes[k].get(), i);
+    frame.map_points[i] = point;
+    points.push_back(point);
+  }
+  return points;
+}
+}  // namespace
+
+namespace {
 /// A frame at the identity seeing 60 established points (two keyframes each) exactly where they
 /// are, and 12 young points (one keyframe) at 1 m that moved 6 px to the right since mapped.
 /// The frame's own pose is pulled 2 cm sideways, as young movers pull it.
@@ -114,37 +158,18 @@ struct MappedScene {
 
 MappedScene mappedScene() {
   MappedScene s;
-  auto camera = std::make_shared<PinholeCamera>();
-  auto scales = std::make_shared<PyramidScales>(PyramidScales::fromConfig(OrbConfig{}));
-  Features f;
-  f.camera = camera;
-  f.scales = scales;
+  Features f = cameraFeatures();
   std::vector<Vec3> world;
   for (int i = 0; i < 72; ++i) {
     const bool young = i >= 60;
     const double z = young ? 1.0 : 2.0 + 0.03 * i;
     const double u = young ? 500 + 10 * (i % 4) : 40 + 55 * (i % 10);
     const double v = young ? 250 + 10 * ((i - 60) / 4) : 40 + 60 * (i / 10);
-    world.push_back(camera->backproject(u, v, z));
-    const float moved_px = young ? 6.f : 0.f;
-    f.keypoints.emplace_back(cv::Point2f(float(u) + moved_px, float(v)), 31.f);
-    f.points.emplace_back(float(u) + moved_px, float(v));
-    f.depth_m.push_back(static_cast<float>(z));
-    f.u_right.push_back(-1.f);
-    f.usable.push_back(1);
-    f.instance_id.push_back(0);
+    world.push_back(addShiftedKeypoint(f, u, v, z, young ? 6.f : 0.f));
   }
   s.frame = Frame(9, 0.3, f);
-  for (int k = 0; k < 2; ++k)
-    s.keyframes.push_back(std::make_shared<KeyFrame>(k, k, 0.1 * k, f, SE3::Identity(),
-                                                     std::vector<MapPointPtr>(72)));
-  for (int i = 0; i < 72; ++i) {
-    auto point = std::make_shared<MapPoint>(i, world[i], s.keyframes[0].get());
-    point->addObservation(s.keyframes[0].get(), i);
-    if (i < 60) point->addObservation(s.keyframes[1].get(), i);
-    s.frame.map_points[i] = point;
-    s.points.push_back(point);
-  }
+  s.points = matchToMapPoints(
+      s.frame, f, world, [](int i) { return i < 60 ? 2 : 1; }, s.keyframes);
   s.frame.T_camera_world = makeSE3(Quat::Identity(), Vec3(0.02, 0, 0));
   return s;
 }
@@ -200,11 +225,7 @@ struct ObjectScene {
 
 ObjectScene objectScene(int object, float moved_px, const std::string& class_name = "box") {
   ObjectScene s;
-  auto camera = std::make_shared<PinholeCamera>();
-  auto scales = std::make_shared<PyramidScales>(PyramidScales::fromConfig(OrbConfig{}));
-  Features f;
-  f.camera = camera;
-  f.scales = scales;
+  Features f = cameraFeatures();
   const int n = 32 + object;
   std::vector<Vec3> world;
   for (int i = 0; i < n; ++i) {
@@ -213,27 +234,14 @@ ObjectScene objectScene(int object, float moved_px, const std::string& class_nam
     const double z = on_object ? 1.5 : 2.0 + 0.05 * i;
     const double u = on_object ? 380 + 12 * (k % 8) : 40 + 70 * (k % 8);
     const double v = on_object ? 150 + 15 * (k / 8) : 40 + 100 * (k / 8);
-    world.push_back(camera->backproject(u, v, z));
-    const float shift = on_object ? moved_px : 0.f;
-    f.keypoints.emplace_back(cv::Point2f(float(u) + shift, float(v)), 31.f);
-    f.points.emplace_back(float(u) + shift, float(v));
-    f.depth_m.push_back(static_cast<float>(z));
-    f.u_right.push_back(-1.f);
-    f.usable.push_back(1);
-    f.instance_id.push_back(on_object ? 1 : 0);
+    world.push_back(addShiftedKeypoint(f, u, v, z, on_object ? moved_px : 0.f, on_object ? 1 : 0));
   }
   s.frame = Frame(9, 0.3, f);
-  for (int k = 0; k < 2; ++k)
-    s.keyframes.push_back(
-        std::make_shared<KeyFrame>(k, k, 0.1 * k, f, SE3::Identity(), std::vector<MapPointPtr>(n)));
-  for (int i = 0; i < n; ++i) {
-    auto point = std::make_shared<MapPoint>(i, world[i], s.keyframes[0].get());
-    for (auto& kf : s.keyframes) point->addObservation(kf.get(), i);
-    s.frame.map_points[i] = point;
-    s.frame.outlier[i] = i < 32 && moved_px != 0.f;
-  }
+  matchToMapPoints(
+      s.frame, f, world, [](int) { return 2; }, s.keyframes);
+  for (int i = 0; i < 32; ++i) s.frame.outlier[i] = moved_px != 0.f;
   // The pose the object pulled: its 6 px at 1.5 m are 1.7 cm.
-  s.frame.T_camera_world = makeSE3(Quat::Identity(), Vec3(moved_px * 1.5 / camera->fx, 0, 0));
+  s.frame.T_camera_world = makeSE3(Quat::Identity(), Vec3(moved_px * 1.5 / f.camera->fx, 0, 0));
   s.instances = Instances::none(cv::Size(640, 480));
   Instance it;
   it.id = 1;
