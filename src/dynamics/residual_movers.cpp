@@ -20,23 +20,31 @@ struct DisjointSets {
   void join(int a, int b) { parent[find(a)] = find(b); }
 };
 
-/// The median normalised residual of the young keypoints outside `region` (zero if fewer than
-/// `min_points`). Young points share their keyframe's pose error, which the established points
-/// do not: all of them then show a common offset, which is not motion.
-Eigen::Vector2d othersOffset(const std::vector<int>& young, const std::vector<int>& region,
-                             const std::vector<MapResidual>& residuals, int min_points) {
+/// Per-axis median of the normalised residuals r / sigma of `keypoints` (not empty).
+Eigen::Vector2d medianNormalised(const std::vector<int>& keypoints,
+                                 const std::vector<MapResidual>& residuals) {
   std::vector<double> u, v;
-  for (const int i : young) {
-    if (std::binary_search(region.begin(), region.end(), i)) continue;
+  for (const int i : keypoints) {
     u.push_back(residuals[i].du_px / residuals[i].sigma_px);
     v.push_back(residuals[i].dv_px / residuals[i].sigma_px);
   }
-  if (static_cast<int>(u.size()) < min_points) return Eigen::Vector2d::Zero();
   auto median = [](std::vector<double>& x) {
     std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
     return x[x.size() / 2];
   };
   return {median(u), median(v)};
+}
+
+/// The median normalised residual of the young keypoints outside `region` (zero if fewer than
+/// `min_points`). Young points share their keyframe's pose error, which the established points
+/// do not: all of them then show a common offset, which is not motion.
+Eigen::Vector2d othersOffset(const std::vector<int>& young, const std::vector<int>& region,
+                             const std::vector<MapResidual>& residuals, int min_points) {
+  std::vector<int> others;
+  for (const int i : young)
+    if (!std::binary_search(region.begin(), region.end(), i)) others.push_back(i);
+  if (static_cast<int>(others.size()) < min_points) return Eigen::Vector2d::Zero();
+  return medianNormalised(others, residuals);
 }
 }  // namespace
 
@@ -95,23 +103,17 @@ ResidualInstances findResidualInstances(const Frame& frame,
   ResidualInstances out;
   const Features& f = frame.features;
   if (instances.empty() || f.instance_id.size() != f.keypoints.size()) return out;
-  std::map<uint16_t, std::vector<Eigen::Vector2d>> normalised;  // instance -> r / sigma
+  std::map<uint16_t, std::vector<int>> measured;  // instance -> keypoints with a residual
   const int n = std::min(frame.size(), static_cast<int>(background_residuals.size()));
-  for (int i = 0; i < n; ++i) {
-    const MapResidual& r = background_residuals[i];
-    if (r.valid && f.instance_id[i] != 0)
-      normalised[f.instance_id[i]].emplace_back(r.du_px / r.sigma_px, r.dv_px / r.sigma_px);
-  }
-  for (auto& [id, values] : normalised) {
+  for (int i = 0; i < n; ++i)
+    if (background_residuals[i].valid && f.instance_id[i] != 0)
+      measured[f.instance_id[i]].push_back(i);
+  for (const auto& [id, keypoints] : measured) {
     const Instance* instance = instances.find(id);
-    const int count = static_cast<int>(values.size());
+    const int count = static_cast<int>(keypoints.size());
     if (!instance || isPriorDynamic(*instance, config) || count < config.residual_region_min_points)
       continue;
-    std::vector<double> u, v;
-    for (const Eigen::Vector2d& x : values) u.push_back(x.x()), v.push_back(x.y());
-    std::nth_element(u.begin(), u.begin() + count / 2, u.end());
-    std::nth_element(v.begin(), v.begin() + count / 2, v.end());
-    const Eigen::Vector2d median(u[count / 2], v[count / 2]);
+    const Eigen::Vector2d median = medianNormalised(keypoints, background_residuals);
     if (count * (2.0 / M_PI) * median.squaredNorm() > config.residual_region_chi2 &&
         median.norm() >= config.residual_region_min_px)
       out.ids.push_back(id);
