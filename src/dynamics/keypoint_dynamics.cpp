@@ -10,9 +10,14 @@
 
 namespace dynanav {
 
+bool isPriorDynamicClass(const std::string& class_name,
+                         const std::vector<std::string>& prior_dynamic_classes) {
+  return std::find(prior_dynamic_classes.begin(), prior_dynamic_classes.end(), class_name) !=
+         prior_dynamic_classes.end();
+}
+
 bool isPriorDynamic(const Instance& instance, const DynamicsConfig& config) {
-  const auto& classes = config.prior_dynamic_classes;
-  return std::find(classes.begin(), classes.end(), instance.class_name) != classes.end();
+  return isPriorDynamicClass(instance.class_name, config.prior_dynamic_classes);
 }
 
 namespace {

@@ -21,6 +21,9 @@ namespace dynanav {
 
 /// True if the instance's class is listed in prior_dynamic_classes.
 bool isPriorDynamic(const Instance& instance, const DynamicsConfig& config);
+/// `class_name` is one of `prior_dynamic_classes` (a class that moves by itself: people).
+bool isPriorDynamicClass(const std::string& class_name,
+                         const std::vector<std::string>& prior_dynamic_classes);
 
 /// CV_8U mask for the ORB extractor: 255 where features may be extracted, 0 on prior-dynamic
 /// instances grown by prior_mask_dilate_px. Person masks miss parts (a head, an arm, a blurred

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "dynamics/height_range.hpp"
+#include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_motion.hpp"
 #include "dynamics/object_points.hpp"
 
@@ -406,10 +407,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
                                         config_.position_sigma_m);
       const Vec3 innovation = p_world - track.filter.position();
       if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
-        track.filter = KalmanCv(p_world,
-                                {config_.accel_sigma_mps2, config_.position_sigma_m,
-                                 config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
-                                cov_world);
+        track.filter = KalmanCv(p_world, filterNoise(), cov_world);
         restarted = true;
       }
     }
@@ -478,6 +476,11 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
 }
 
+KalmanCvNoise ObjectTracker::filterNoise() const {
+  return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
+          kInitialVelocitySigmaMps};
+}
+
 bool ObjectTracker::filterVelocityKnown(const Track& track) const {
   return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
 }
@@ -497,14 +500,10 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
   const auto centre = measureCentre(t, p_camera, &instance, input);
   if (!centre) return std::nullopt;
-  t.filter = KalmanCv(input.T_world_camera * centre->p_camera,
-                      {config_.accel_sigma_mps2, config_.position_sigma_m,
-                       config_.velocity_sigma_mps, kInitialVelocitySigmaMps},
-                      centre->cov_world);
+  t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
+  t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = contains(input.dynamics.moving_ids, instance.id);
-  t.prior_dynamic = std::find(prior_dynamic_classes_.begin(), prior_dynamic_classes_.end(),
-                              instance.class_name) != prior_dynamic_classes_.end();
   // Placed by its height: no verdict to go by (update's static rule for such tracks).
   t.still = moving || t.ranged_scale_sigma > 0.0 ? 0 : 1;
   // A person is taken as moving until found still; a chair as static until found moving.

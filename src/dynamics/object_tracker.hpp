@@ -86,6 +86,8 @@ class ObjectTracker {
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
   /// The filter's velocity has been narrowed from its prior (0 +- 1 m/s) by measurements.
   [[nodiscard]] bool filterVelocityKnown(const Track& track) const;
+  /// The configured noise of a track's filter (a new track, or one restarted at a centre).
+  [[nodiscard]] KalmanCvNoise filterNoise() const;
   struct Centre {
     Vec3 p_camera;
     std::optional<Mat3> cov_world;  ///< measurement noise (m^2); none: the configured one
