@@ -70,6 +70,12 @@ fs::path scratchDir(const std::string& tag) {
   return dir;
 }
 
+void removeScratchDir(const fs::path& dir) {
+  if (dir.empty() || std::getenv("DYNANAV_KEEP_TEST_OUTPUT")) return;
+  std::error_code ignored;  // a folder already gone is fine
+  fs::remove_all(dir, ignored);
+}
+
 int runCli(const std::string& args, std::string* output) {
   const std::string cmd = std::string("\"") + DYNANAV_CLI + "\" " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");

@@ -16,6 +16,10 @@ std::filesystem::path sharedSequence(const std::string& name);
 std::filesystem::path sharedModels();
 /// A fresh empty folder under the system temp dir, unique per test.
 std::filesystem::path scratchDir(const std::string& tag);
+/// Removes a per-process scratch folder (a suite's, named with its pid: a fixed-name folder is
+/// reused by the next run, a pid-named one would pile up in the temp dir, ~0.2 GB per run)
+/// unless $DYNANAV_KEEP_TEST_OUTPUT is set (to look at a failed run's files).
+void removeScratchDir(const std::filesystem::path& dir);
 /// Runs `<build>/bin/dynanav ARGS`, capturing stdout+stderr into `output`; returns the exit code.
 int runCli(const std::string& args, std::string* output = nullptr);
 /// Starts `<build>/bin/dynanav ARGS`, sends `signal_number` after `delay` and waits: the exit

@@ -24,6 +24,7 @@ constexpr int kFrames = 60;  // 2 s at 30 Hz
 
 class AudioCli : public ::testing::Test {
  protected:
+  static void TearDownTestSuite() { test::removeScratchDir(dir_); }
   static void SetUpTestSuite() {
     dir_ = test::scratchDir("audio_cli_" + std::to_string(getpid()));
     std::string log;

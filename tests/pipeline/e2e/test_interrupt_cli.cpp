@@ -41,6 +41,7 @@ void expectWellFormedOutputs(const fs::path& out, int max_frames) {
 
 class InterruptCli : public ::testing::Test {
  protected:
+  static void TearDownTestSuite() { test::removeScratchDir(dir_); }
   static void SetUpTestSuite() {
     dir_ = test::scratchDir("interrupt_cli_" +
                             std::to_string(getpid()));  // one per test process (ctest -j)

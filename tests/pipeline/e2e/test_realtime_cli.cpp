@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 
 class RealtimeCli : public ::testing::Test {
  protected:
+  static void TearDownTestSuite() { test::removeScratchDir(dir_); }
   static void SetUpTestSuite() {
     dir_ = test::scratchDir("realtime_cli_" +
                             std::to_string(getpid()));  // one per test process (ctest -j)
