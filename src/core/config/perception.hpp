@@ -38,7 +38,7 @@ struct PerceptionConfig {
   bool keypoints = false;
   double keypoint_crop_scale = 1.15;
   bool parallel_person_models = true;
-  int segmenter_nice = 10;
+  int segmenter_nice = 0;
 
   // Propagation between segmented frames (DIS optical flow).
   double flow_scale = 0.5;
@@ -91,8 +91,9 @@ struct PerceptionConfig {
       "run MoveNet on person boxes (shoulders, hips); off by default: no stage of `run` needs "
       "them and they cost ~30 % of dnn segmentation (docs/pipeline.md)");
     v("segmenter_nice", segmenter_nice,
-      "real time: nice value of the segmenter thread (higher = yields to tracking, which must "
-      "keep up)",
+      "real time: nice value of the segmenter thread (higher = yields to tracking; 0 since "
+      "session 12: at 10 the starved segmenter's masks arrived up to 20-25 frames late and the "
+      "paced Bonn ATE was 5x worse, docs/pipeline.md)",
       Range{0, 19});
     v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet",
       Range{1, 4});
