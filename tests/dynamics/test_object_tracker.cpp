@@ -228,7 +228,9 @@ TEST(ObjectTracker, SidewaysObjectWhoseFlowUnderReadsGetsItsSpeedFromItsCentre) 
     if (i > 0) f.flow_half.setTo(cv::Scalar(0.5f * kPixelsPerFrame / 2, 0.f));
     out = step(tracker, f, i);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
-    if (i == 0) EXPECT_FALSE(out[0].velocity_known) << "a new track has no velocity yet";
+    if (i == 0) {
+      EXPECT_FALSE(out[0].velocity_known) << "a new track has no velocity yet";
+    }
     if (i >= 70) {
       EXPECT_TRUE(out[0].velocity_known) << "frame " << i;
       // Not below: a blend with the flow would end low. Up to 0.045 above: a person's centre lies
@@ -262,7 +264,9 @@ TEST(ObjectTracker, ObjectThatStopsReportsZeroSpeedSoonAfter) {
     const PinholeCamera cam = camera();
     out = tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
-    if (i == kStopFrame) EXPECT_GT(out[0].speed_mps, 0.25) << "moving up to here";
+    if (i == kStopFrame) {
+      EXPECT_GT(out[0].speed_mps, 0.25) << "moving up to here";
+    }
     if (i >= kStopFrame + 4) {
       EXPECT_LE(out[0].speed_mps, 0.05) << "frame " << i;
       EXPECT_FALSE(out[0].dynamic) << "frame " << i;
@@ -323,7 +327,9 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
       out = tracker.track(
           {i, i / 30.0, f.instances, no_verdict, f.flow_half, f.depth_m, T, true, cam});
       ASSERT_EQ(out.size(), 1u) << "frame " << i;
-      if (i == kStart) EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
+      if (i == kStart) {
+        EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
+      }
       if (i >= kStart + 15 && class_name == "person") {
         // Released, not held at 0 (this synthetic block read as a person is placed by a
         // person's rules and reads its speed up to a third high: the range is what is tested).
@@ -331,7 +337,9 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
         EXPECT_GT(out[0].speed_mps, 0.5 * expected) << "frame " << i;
         EXPECT_LT(out[0].speed_mps, 1.5 * expected) << "frame " << i;
       }
-      if (i >= kStart + 15 && class_name == "box") EXPECT_FALSE(out[0].dynamic) << "frame " << i;
+      if (i >= kStart + 15 && class_name == "box") {
+        EXPECT_FALSE(out[0].dynamic) << "frame " << i;
+      }
       if (moving) x += kScale * kPixelsPerFrame;
     }
   }
@@ -416,8 +424,12 @@ TEST(ObjectTracker, AHeldObjectFoundMovingReadsItsSpeedAtOnce) {
     const auto out =
         tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
-    if (i == 9) EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
-    if (i >= 12) EXPECT_NEAR(out[0].speed_mps, expected, 0.08) << "frame " << i;
+    if (i == 9) {
+      EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
+    }
+    if (i >= 12) {
+      EXPECT_NEAR(out[0].speed_mps, expected, 0.08) << "frame " << i;
+    }
     if (pushed) x += kPixelsPerFrame;
   }
 }

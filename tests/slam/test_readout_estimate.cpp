@@ -206,8 +206,9 @@ TEST(ReadoutEstimate, NoisyFramesPoolToTheTruthWithAnHonestSigma) {
     const Scene scene = makeScene(kPose, v, 0.025, 1.0, 100 + k, kStillCreator);
     estimator.add(
         readoutEvidence(scene.frame, KeypointMeasurements::of(scene.frame.features), v, 0.0));
-    if (estimator.frames() < ReadoutEstimator::kMinFrames)
+    if (estimator.frames() < ReadoutEstimator::kMinFrames) {
       EXPECT_TRUE(std::isinf(estimator.sigmaS()));
+    }
   }
   ASSERT_GE(estimator.frames(), ReadoutEstimator::kMinFrames);
   EXPECT_NEAR(estimator.readoutS(), 0.025, 0.002);
