@@ -26,8 +26,13 @@ cv::Mat drawTopView(const OccupancyGrid& grid, const std::vector<Vec3>& wearer_p
     const auto points = polyline(path.p_world, colour, 2);
     if (points.empty()) continue;
     cv::circle(out, points.back(), 5, colour, cv::FILLED, cv::LINE_AA);
-    cv::putText(out, "#" + std::to_string(id) + " " + path.class_name,
-                points.back() + cv::Point(6, -6), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+    // Appended rather than "#" + ...: GCC 12 warns falsely on that form (-Wrestrict, its bug
+    // 105651) in optimised builds.
+    std::string label = "#";
+    label += std::to_string(id);
+    label += ' ';
+    label += path.class_name;
+    cv::putText(out, label, points.back() + cv::Point(6, -6), cv::FONT_HERSHEY_SIMPLEX, 0.45,
                 cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   }
   const auto wearer = polyline(wearer_path_world, cv::Scalar(255, 80, 0), 3);
