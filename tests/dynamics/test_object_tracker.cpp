@@ -56,13 +56,20 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
   return f;
 }
 
-std::vector<TrackedObject> step(ObjectTracker& tracker, const SynthFrame& f, int index) {
-  FrameDynamics dynamics;
-  for (const Instance& it : f.instances.items) dynamics.moving_ids.push_back(it.id);
+/// One frame at 30 Hz, camera at the identity, with the dynamics stage's verdicts `dynamics`.
+std::vector<TrackedObject> step(ObjectTracker& tracker, const SynthFrame& f, int index,
+                                const FrameDynamics& dynamics) {
   const SE3 T_world_camera = SE3::Identity();
   const PinholeCamera cam = camera();
   return tracker.track({index, index / 30.0, f.instances, dynamics, f.flow_half, f.depth_m,
                         T_world_camera, true, cam});
+}
+
+/// One frame in which the dynamics stage finds every instance moving.
+std::vector<TrackedObject> step(ObjectTracker& tracker, const SynthFrame& f, int index) {
+  FrameDynamics dynamics;
+  for (const Instance& it : f.instances.items) dynamics.moving_ids.push_back(it.id);
+  return step(tracker, f, index, dynamics);
 }
 
 }  // namespace
@@ -124,10 +131,8 @@ TEST(ObjectTracker, StaticObjectHasZeroVelocity) {
   for (int i = 0; i < 10; ++i) {
     SynthFrame f = frame({200.f}, {true}, i > 0);
     f.flow_half.setTo(cv::Scalar(0.f, 0.f));
-    const SE3 T = SE3::Identity();
-    const PinholeCamera cam = camera();
     FrameDynamics dynamics;  // never found moving
-    out = tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+    out = step(tracker, f, i, dynamics);
   }
   ASSERT_EQ(out.size(), 1u);
   EXPECT_FALSE(out[0].dynamic);
@@ -215,10 +220,8 @@ TEST(ObjectTracker, SidewaysObjectWhoseFlowUnderReadsGetsItsSpeedFromItsCentre) 
   // while the object (and its mask) moves 3. The one-frame rigid motion reads half the speed in
   // every frame; the centres measured over the frames read all of it, and the filter must end
   // there, with a covariance that covers its error and is narrow enough to call the velocity known
-  // (scripts/tracking_results.sh's 0.5 m/s^2).
-  ObjectTrackingConfig config;
-  config.accel_sigma_mps2 = 0.5;
-  ObjectTracker tracker(config, 5);
+  // (the default 0.5 m/s^2 of unmodelled acceleration).
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
   const double expected = kSlideSpeedMps;
   float x = 100.f;
   std::vector<TrackedObject> out;
@@ -260,9 +263,7 @@ TEST(ObjectTracker, ObjectThatStopsReportsZeroSpeedSoonAfter) {
     if (!moving) f.flow_half.setTo(cv::Scalar(0.f, 0.f));
     FrameDynamics dynamics;
     if (moving) dynamics.moving_ids.push_back(1);
-    const SE3 T = SE3::Identity();
-    const PinholeCamera cam = camera();
-    out = tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+    out = step(tracker, f, i, dynamics);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i == kStopFrame) {
       EXPECT_GT(out[0].speed_mps, 0.25) << "moving up to here";
@@ -290,10 +291,7 @@ TEST(ObjectTracker, NotFoundMovingIsNotStaticWhileTheOwnVelocityIsFast) {
     f.instances.items[0].class_name = "person";  // a box with no verdict is static (below)
     if (i > 0) f.flow_half *= kScale;
     const FrameDynamics no_verdict;
-    const SE3 T = SE3::Identity();
-    const PinholeCamera cam = camera();
-    out =
-        tracker.track({i, i / 30.0, f.instances, no_verdict, f.flow_half, f.depth_m, T, true, cam});
+    out = step(tracker, f, i, no_verdict);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i >= 20) {
       EXPECT_TRUE(out[0].dynamic) << "frame " << i;
@@ -322,10 +320,7 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
       f.instances.items[0].class_name = class_name;
       if (i > 0) f.flow_half *= moving ? kScale : 0.f;
       const FrameDynamics no_verdict;
-      const SE3 T = SE3::Identity();
-      const PinholeCamera cam = camera();
-      out = tracker.track(
-          {i, i / 30.0, f.instances, no_verdict, f.flow_half, f.depth_m, T, true, cam});
+      out = step(tracker, f, i, no_verdict);
       ASSERT_EQ(out.size(), 1u) << "frame " << i;
       if (i == kStart) {
         EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
@@ -364,10 +359,7 @@ TEST(ObjectTracker, AnObjectThatDoesNotMoveByItselfIsStaticUntilFoundMoving) {
       if (i > 20) f.flow_half.setTo(cv::Scalar(0.f, 0.f));
       FrameDynamics dynamics;
       if (pushed) dynamics.moving_ids.push_back(1);
-      const SE3 T = SE3::Identity();
-      const PinholeCamera cam = camera();
-      const auto out =
-          tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+      const auto out = step(tracker, f, i, dynamics);
       ASSERT_EQ(out.size(), 1u) << class_name << " frame " << i;
       if (pushed) x += kPixelsPerFrame;
       if (class_name == "person") {
@@ -389,9 +381,7 @@ TEST(ObjectTracker, ARigidObjectKeepsItsRigidMotionsSpeed) {
   // visible width behind the surface along the viewing ray, which turns as it moves: the centres
   // alone read 6 % fast. A rigid object's flow has no smooth-clothes bias, so its
   // rigid motion keeps entering the filter and holds the speed at the truth.
-  ObjectTrackingConfig config;
-  config.accel_sigma_mps2 = 0.5;
-  ObjectTracker tracker(config, 5);
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
   const double expected = kSlideSpeedMps;
   float x = 100.f;
   double sum = 0.0;
@@ -419,10 +409,7 @@ TEST(ObjectTracker, AHeldObjectFoundMovingReadsItsSpeedAtOnce) {
     if (!pushed) f.flow_half.setTo(cv::Scalar(0.f, 0.f));
     FrameDynamics dynamics;
     if (pushed) dynamics.moving_ids.push_back(1);
-    const SE3 T = SE3::Identity();
-    const PinholeCamera cam = camera();
-    const auto out =
-        tracker.track({i, i / 30.0, f.instances, dynamics, f.flow_half, f.depth_m, T, true, cam});
+    const auto out = step(tracker, f, i, dynamics);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i == 9) {
       EXPECT_FALSE(out[0].dynamic) << "held still while it stood";

@@ -144,9 +144,7 @@ std::vector<MapPointPtr> matchToMapPoints(Frame& frame, const Features& f,
   }
   return points;
 }
-}  // namespace
 
-namespace {
 /// A frame at the identity seeing 60 established points (two keyframes each) exactly where they
 /// are, and 12 young points (one keyframe) at 1 m that moved 6 px to the right since mapped.
 /// The frame's own pose is pulled 2 cm sideways, as young movers pull it.
