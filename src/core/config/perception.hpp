@@ -91,9 +91,9 @@ struct PerceptionConfig {
       "run MoveNet on person boxes (shoulders, hips); off by default: no stage of `run` needs "
       "them and they cost ~30 % of dnn segmentation (docs/pipeline.md)");
     v("segmenter_nice", segmenter_nice,
-      "real time: nice value of the segmenter thread (higher = yields to tracking; 0 since "
-      "session 12: at 10 the starved segmenter's masks arrived up to 20-25 frames late and the "
-      "paced Bonn ATE was 5x worse, docs/pipeline.md)",
+      "real time: nice value of the segmenter thread; higher yields to tracking but starves the "
+      "segmenter, whose masks then arrive late (at 10: up to 25 frames, paced Bonn ATE ~5x "
+      "worse; docs/pipeline.md)",
       Range{0, 19});
     v("keypoint_crop_scale", keypoint_crop_scale, "square crop side / longer box side for MoveNet",
       Range{1, 4});
