@@ -465,8 +465,10 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // An object that does not move by itself is static once the dynamics stage has not found it
   // moving for a while, unless its own velocity is clearly fast: its points' jitter says little
   // (Bonn crowd's chairs: most of their frames reported moving came from that jitter and from a
-  // new track's unknown velocity).
-  const bool unmoved_object = !track.prior_dynamic && !fast;
+  // new track's unknown velocity). Missed by the segmenter, its velocity comes from points
+  // carried by a flow that a walker in front drags along: no evidence either (Bonn: 38 of the
+  // 121 chair frames still reported moving, docs/tracking.md "Session 13").
+  const bool unmoved_object = !track.prior_dynamic && (!fast || !instance);
   track.stationary = verified_static || (!sets_off && track.still >= config_.static_after_frames &&
                                          (slow || long_unmoved || unmoved_object));
   if (track.stationary) {

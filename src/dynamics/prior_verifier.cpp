@@ -30,12 +30,26 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
     flow *= 1.0 / kFlowScale;
     const SE3 T_cur_old = input.T_camera_world * old.T_camera_world.inverse();
     for (const Instance& instance : old.instances.items) {
-      const auto pixels = sampleMaskPixels(old.instances.mask(instance.id), config_.sample_step_px);
+      const cv::Mat mask = old.instances.mask(instance.id);
+      const auto pixels = sampleMaskPixels(mask, config_.sample_step_px);
       std::vector<Vec3> p_old, p_cur;
       liftFlowCorrespondences(pixels, flow, old.depth_m, input.depth_m, input.camera, p_old, p_cur);
-      const SceneFlowVerdict verdict = sceneFlowVerdict(p_old, p_cur, T_cur_old, config_);
-      if (!verdict.decided) continue;
       const bool prior = isPriorDynamic(instance, config_);
+      // An object that does not move by itself (a chair) moves only relative to the static
+      // background around it: most of Bonn crowd's chairs found moving had surroundings whose
+      // dense flow was off as much as theirs (docs/dynamics.md "Session 13"). People keep the
+      // test against the camera's motion: a walker's surroundings hold the flow they drag along.
+      BackgroundMotion background;
+      if (!prior && config_.scene_flow_reference_px > 0) {
+        const auto ring = sampleRingPixels(mask, old.instances.labels,
+                                           config_.scene_flow_reference_px, config_.sample_step_px);
+        std::vector<Vec3> q_old, q_cur;
+        liftFlowCorrespondences(ring, flow, old.depth_m, input.depth_m, input.camera, q_old, q_cur);
+        background = backgroundMotion(q_old, q_cur, T_cur_old, config_);
+      }
+      const SceneFlowVerdict verdict =
+          sceneFlowVerdict(p_old, p_cur, T_cur_old, config_, background);
+      if (!verdict.decided) continue;
       if (prior && (verdict.dynamic || verdict.still))
         ++(verdict.dynamic ? out.prior_moving : out.prior_static);
       if (instances.labels.empty()) continue;

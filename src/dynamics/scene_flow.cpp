@@ -4,9 +4,18 @@
 #include <cmath>
 #include <map>
 
+#include <opencv2/imgproc.hpp>
+
 #include "core/frame.hpp"
 
 namespace dynanav {
+namespace {
+double median(std::vector<double>& values) {
+  const auto mid = values.begin() + long(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+}  // namespace
 
 double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config) {
   const double sigma_prev = config.depth_noise_per_z2 * z_prev_m * z_prev_m;
@@ -17,20 +26,23 @@ double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsCo
 
 SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
                                   const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
-                                  const DynamicsConfig& config) {
+                                  const DynamicsConfig& config,
+                                  const BackgroundMotion& background) {
   SceneFlowVerdict v;
   const size_t n = std::min(p_prev_camera.size(), p_cur_camera.size());
   double sum = 0.0;
   Vec3 sum_vector = Vec3::Zero();
   for (size_t i = 0; i < n; ++i) {
     // Where the point would be now had it not moved, vs. where it is.
-    const Vec3 flow = p_cur_camera[i] - T_cur_prev * p_prev_camera[i];
+    const Vec3 flow = p_cur_camera[i] - T_cur_prev * p_prev_camera[i] - background.displacement_m;
     const double flow_m = flow.norm();
     sum += flow_m;
     sum_vector += flow;
     ++v.points;
-    v.moving +=
-        flow_m > sceneFlowPointThreshold(p_prev_camera[i].z(), p_cur_camera[i].z(), config) ? 1 : 0;
+    const double threshold_m =
+        std::max(sceneFlowPointThreshold(p_prev_camera[i].z(), p_cur_camera[i].z(), config),
+                 config.scene_flow_point_sigmas * background.sigma_m);
+    v.moving += flow_m > threshold_m ? 1 : 0;
   }
   v.mean_flow_m = v.points ? sum / v.points : 0.0;
   v.decided = v.points >= config.scene_flow_min_points;
@@ -47,6 +59,51 @@ SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
   // of standing still. The mean vector, where the noise averages out, is.
   v.still = v.decided && !v.dynamic && v.mean_vector_m <= config.scene_flow_point_m;
   return v;
+}
+
+BackgroundMotion backgroundMotion(const std::vector<Vec3>& p_prev_camera,
+                                  const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
+                                  const DynamicsConfig& config) {
+  BackgroundMotion motion;
+  const size_t n = std::min(p_prev_camera.size(), p_cur_camera.size());
+  if (n == 0 || int(n) < config.scene_flow_min_points) return motion;
+  std::vector<Vec3> flows(n);
+  for (size_t i = 0; i < n; ++i) flows[i] = p_cur_camera[i] - T_cur_prev * p_prev_camera[i];
+  std::vector<double> values(n);
+  for (int a = 0; a < 3; ++a) {
+    for (size_t i = 0; i < n; ++i) values[i] = flows[i][a];
+    motion.displacement_m[a] = median(values);
+  }
+  // The median length of the residuals is 1.538 sigma for a 3D Gaussian of sigma per axis: a
+  // scale that ignores the few background points a walker's flow drags along.
+  for (size_t i = 0; i < n; ++i) values[i] = (flows[i] - motion.displacement_m).norm();
+  motion.sigma_m = median(values) / 1.538;
+  return motion;
+}
+
+std::vector<cv::Point> sampleRingPixels(const cv::Mat& object_mask, const cv::Mat& labels,
+                                        int ring_px, int step) {
+  CV_Assert(object_mask.type() == CV_8UC1 && labels.type() == CV_16UC1 &&
+            object_mask.size() == labels.size() && step > 0 && ring_px >= 0);
+  std::vector<cv::Point> pixels;
+  const cv::Rect box = cv::boundingRect(object_mask);
+  if (box.empty() || ring_px == 0) return pixels;
+  // Only the object's box grown by the ring is dilated: a whole-image dilation per object and
+  // frame would cost more than the scene flow itself.
+  const cv::Rect grown = cv::Rect(box.x - ring_px, box.y - ring_px, box.width + 2 * ring_px,
+                                  box.height + 2 * ring_px) &
+                         cv::Rect(0, 0, labels.cols, labels.rows);
+  cv::Mat near;
+  cv::dilate(object_mask(grown), near,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * ring_px + 1, 2 * ring_px + 1)));
+  near.setTo(0, labels(grown) != 0);
+  for (int v = step / 2; v < labels.rows; v += step) {
+    if (v < grown.y || v >= grown.br().y) continue;
+    const uchar* row = near.ptr<uchar>(v - grown.y);
+    for (int u = step / 2; u < labels.cols; u += step)
+      if (u >= grown.x && u < grown.br().x && row[u - grown.x]) pixels.emplace_back(u, v);
+  }
+  return pixels;
 }
 
 std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step) {

@@ -34,11 +34,36 @@ struct SceneFlowVerdict {
 /// not make far points move.
 double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config);
 
+/// How the static background around an object moved between the two frames after ego-motion
+/// (current camera frame): what a dense flow dragged along, a pose slightly off or depth noise
+/// gives a point that did not move.
+struct BackgroundMotion {
+  Vec3 displacement_m = Vec3::Zero();  ///< per-axis median displacement
+  double sigma_m = 0.0;                ///< robust per-axis sigma of the displacements about it
+};
+
 /// Verdict from corresponding 3D points of one object in the previous and current camera frames.
 /// T_cur_prev maps previous-camera coordinates into the current camera (the ego-motion).
+/// `background` (backgroundMotion of the object's surroundings; default: none) is taken off every
+/// point, and a point moves only if it moved scene_flow_point_sigmas of the background's sigma
+/// too: an error the object shares with its surroundings moves neither.
 SceneFlowVerdict sceneFlowVerdict(const std::vector<Vec3>& p_prev_camera,
                                   const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
+                                  const DynamicsConfig& config,
+                                  const BackgroundMotion& background = {});
+
+/// The background's motion from its corresponding points (as sceneFlowVerdict's); none (zero)
+/// with fewer than scene_flow_min_points points: then the object is judged against the camera's
+/// motion alone.
+BackgroundMotion backgroundMotion(const std::vector<Vec3>& p_prev_camera,
+                                  const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
                                   const DynamicsConfig& config);
+
+/// Grid pixels (every `step` px, on sampleMaskPixels' grid) of the background within `ring_px`
+/// (chessboard distance) of an object's mask (CV_8U, non-zero = the object): its surroundings,
+/// with every instance of `labels` (CV_16U, 0 = background) left out.
+std::vector<cv::Point> sampleRingPixels(const cv::Mat& object_mask, const cv::Mat& labels,
+                                        int ring_px, int step);
 
 /// Pixels on a regular grid (every `step` px) inside `mask` (CV_8U, non-zero = inside).
 std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);

@@ -168,3 +168,100 @@ TEST(SceneFlow, StillNeedsTheObjectsMeanToStayPutNotOnlyItsPoints) {
   // Too few points: no verdict of either kind.
   EXPECT_FALSE(sceneFlowVerdict({Vec3(0, 0, 1)}, {Vec3(0, 0, 1)}, SE3::Identity(), c).still);
 }
+
+TEST(SceneFlow, BackgroundMotionIsItsMedianAndRobustSpread) {
+  // The surroundings shifted 5 cm sideways with 1 cm of noise per axis; a fifth of them dragged
+  // 40 cm along by a walker's flow. The median and the spread ignore the dragged fifth.
+  std::mt19937 rng(7);
+  DynamicsConfig c;
+  const auto prev = blob(400, Vec3(0, 0, 2.5), rng);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::vector<Vec3> cur;
+  for (size_t i = 0; i < prev.size(); ++i)
+    cur.push_back(prev[i] + Vec3(0.05, 0, 0) + Vec3(noise(rng), noise(rng), noise(rng)) +
+                  (i % 5 == 0 ? Vec3(0.4, 0, 0) : Vec3::Zero()));
+  const BackgroundMotion m = backgroundMotion(prev, cur, SE3::Identity(), c);
+  EXPECT_NEAR(m.displacement_m.x(), 0.05, 0.005);
+  EXPECT_NEAR(m.displacement_m.y(), 0.0, 0.005);
+  EXPECT_NEAR(m.sigma_m, 0.01, 0.004);
+  // Too few points for surroundings: none, and the verdict is the camera-only one.
+  const std::vector<Vec3> few(prev.begin(), prev.begin() + c.scene_flow_min_points - 1);
+  const BackgroundMotion none = backgroundMotion(few, few, SE3::Identity(), c);
+  EXPECT_EQ(none.displacement_m, Vec3::Zero());
+  EXPECT_EQ(none.sigma_m, 0.0);
+}
+
+TEST(SceneFlow, AnObjectDisplacedWithItsSurroundingsIsNotMovingAPushedOneIs) {
+  // A chair 2.2 m away whose flow is off by 5 cm, as is its surroundings' (a blurred turn, or a
+  // walker's flow dragged over both): against the camera's motion alone it moves; against its
+  // surroundings it does not. Pushed 6 cm past still surroundings, it moves either way.
+  std::mt19937 rng(8);
+  DynamicsConfig c;
+  auto noisy = [&](const Vec3& p) { return withRayNoise(p, c, rng); };
+  const auto chair = blob(200, Vec3(0.3, 0.2, 2.2), rng);
+  const auto around = blob(300, Vec3(0.3, 0.2, 2.4), rng);
+  const Vec3 flow_error(0.05, 0, 0), push(0.06, 0, 0);
+  std::vector<Vec3> chair_prev, chair_off, chair_pushed, around_prev, around_off, around_still;
+  for (const auto& p : chair) {
+    chair_prev.push_back(noisy(p));
+    chair_off.push_back(noisy(p) + flow_error);
+    chair_pushed.push_back(noisy(p) + push);
+  }
+  for (const auto& p : around) {
+    around_prev.push_back(noisy(p));
+    around_off.push_back(noisy(p) + flow_error);
+    around_still.push_back(noisy(p));
+  }
+  const SE3 I = SE3::Identity();
+  EXPECT_TRUE(sceneFlowVerdict(chair_prev, chair_off, I, c).dynamic);
+  const auto off = backgroundMotion(around_prev, around_off, I, c);
+  const auto judged = sceneFlowVerdict(chair_prev, chair_off, I, c, off);
+  EXPECT_FALSE(judged.dynamic);
+  EXPECT_TRUE(judged.still);
+  const auto still = backgroundMotion(around_prev, around_still, I, c);
+  EXPECT_TRUE(sceneFlowVerdict(chair_prev, chair_pushed, I, c, still).dynamic);
+}
+
+TEST(SceneFlow, ScatteredSurroundingsRaiseThePointThreshold) {
+  // Dense flow that scatters every point by ~3 cm (its error, not motion): an object scattered
+  // like its surroundings has over 30 % of its points past the depth-noise threshold, but not
+  // past three of the surroundings' sigmas.
+  std::mt19937 rng(9);
+  DynamicsConfig c;
+  std::normal_distribution<double> scatter(0.0, 0.03);
+  auto scattered = [&](const Vec3& p) -> Vec3 { return p + Vec3(scatter(rng), scatter(rng), 0.0); };
+  const auto object = blob(200, Vec3(0, 0, 2.0), rng);
+  const auto around = blob(300, Vec3(0, 0, 2.2), rng);
+  std::vector<Vec3> object_cur, around_cur;
+  for (const auto& p : object) object_cur.push_back(scattered(p));
+  for (const auto& p : around) around_cur.push_back(scattered(p));
+  const SE3 I = SE3::Identity();
+  const auto alone = sceneFlowVerdict(object, object_cur, I, c);
+  EXPECT_GT(double(alone.moving), c.scene_flow_share * alone.points);
+  const auto background = backgroundMotion(around, around_cur, I, c);
+  EXPECT_GT(background.sigma_m, 0.015);
+  const auto judged = sceneFlowVerdict(object, object_cur, I, c, background);
+  EXPECT_LT(double(judged.moving), c.scene_flow_share * judged.points);
+  EXPECT_FALSE(judged.dynamic);
+}
+
+TEST(SceneFlow, RingPixelsAreTheBackgroundAroundTheObjectOnTheSampleGrid) {
+  cv::Mat labels(100, 120, CV_16U, cv::Scalar(0));
+  labels(cv::Rect(40, 30, 20, 30)).setTo(1);  // the object
+  labels(cv::Rect(60, 30, 15, 30)).setTo(2);  // another instance right beside it
+  const int ring = 10, step = 5;
+  const auto pixels = sampleRingPixels(labels == 1, labels, ring, step);
+  ASSERT_FALSE(pixels.empty());
+  const cv::Rect near(40 - ring, 30 - ring, 20 + 2 * ring, 30 + 2 * ring);
+  bool left = false;
+  for (const cv::Point& p : pixels) {
+    EXPECT_EQ(labels.at<uint16_t>(p), 0) << p;  // neither the object nor the other instance
+    EXPECT_TRUE(near.contains(p)) << p;
+    EXPECT_EQ(p.x % step, step / 2);
+    EXPECT_EQ(p.y % step, step / 2);
+    left = left || p.x < 40;
+  }
+  EXPECT_TRUE(left);
+  EXPECT_TRUE(sampleRingPixels(labels == 3, labels, ring, step).empty());  // no such instance
+  EXPECT_TRUE(sampleRingPixels(labels == 1, labels, 0, step).empty());     // no ring asked for
+}
