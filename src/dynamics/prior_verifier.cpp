@@ -1,6 +1,7 @@
 #include "dynamics/prior_verifier.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "dynamics/keypoint_dynamics.hpp"
@@ -37,12 +38,16 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
       const bool prior = isPriorDynamic(instance, config_);
       // An object that does not move by itself (a chair) moves only relative to the static
       // background around it: most of Bonn crowd's chairs found moving had surroundings whose
-      // dense flow was off as much as theirs (docs/dynamics.md "Session 13"). People keep the
+      // dense flow was off as much as theirs (docs/dynamics.md "Session 13"). The surroundings
+      // start beyond the flow's patch footprint: nearer, the patches that cover the object fill
+      // in its own motion (a pushed box's ring then moved more than the box). People keep the
       // test against the camera's motion: a walker's surroundings hold the flow they drag along.
       BackgroundMotion background;
       if (!prior && config_.scene_flow_reference_px > 0) {
-        const auto ring = sampleRingPixels(mask, old.instances.labels,
-                                           config_.scene_flow_reference_px, config_.sample_step_px);
+        const int footprint_px = flowFootprintPx();
+        const auto ring = sampleRingPixels(mask, old.instances.labels, footprint_px,
+                                           footprint_px + config_.scene_flow_reference_px,
+                                           config_.sample_step_px);
         std::vector<Vec3> q_old, q_cur;
         liftFlowCorrespondences(ring, flow, old.depth_m, input.depth_m, input.camera, q_old, q_cur);
         background = backgroundMotion(q_old, q_cur, T_cur_old, config_);
@@ -86,6 +91,12 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
     ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
   }
   return out;
+}
+
+int PriorVerifier::flowFootprintPx() const {
+  // DIS estimates one displacement per patch at its finest pyramid level and blends the
+  // overlapping patches: the flow at a pixel is made from image content up to a patch away.
+  return int(std::lround(dis_->getPatchSize() * (1 << dis_->getFinestScale()) / kFlowScale));
 }
 
 std::vector<uint16_t> cutOutMovingObjects(cv::Mat& allowed, const Instances& instances,

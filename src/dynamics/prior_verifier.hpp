@@ -41,6 +41,9 @@ class PriorVerifier {
   PriorVerdicts verify(const VerifierInput& input, const std::vector<uint16_t>& depth_voted);
   /// CV_8U: non-prior instances found moving in the last verified frame (empty before).
   [[nodiscard]] const cv::Mat& movingMask() const { return moving_mask_; }
+  /// How far (px, full size) the dense flow at a pixel draws on the image around it: one DIS
+  /// patch at its finest level (64 px with the ultrafast preset on half-size images).
+  [[nodiscard]] int flowFootprintPx() const;
 
  private:
   struct Snapshot {

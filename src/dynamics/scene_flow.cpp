@@ -82,26 +82,36 @@ BackgroundMotion backgroundMotion(const std::vector<Vec3>& p_prev_camera,
 }
 
 std::vector<cv::Point> sampleRingPixels(const cv::Mat& object_mask, const cv::Mat& labels,
-                                        int ring_px, int step) {
+                                        int inner_px, int outer_px, int step) {
   CV_Assert(object_mask.type() == CV_8UC1 && labels.type() == CV_16UC1 &&
-            object_mask.size() == labels.size() && step > 0 && ring_px >= 0);
+            object_mask.size() == labels.size() && step > 0 && inner_px >= 0);
   std::vector<cv::Point> pixels;
-  const cv::Rect box = cv::boundingRect(object_mask);
-  if (box.empty() || ring_px == 0) return pixels;
-  // Only the object's box grown by the ring is dilated: a whole-image dilation per object and
-  // frame would cost more than the scene flow itself.
-  const cv::Rect grown = cv::Rect(box.x - ring_px, box.y - ring_px, box.width + 2 * ring_px,
-                                  box.height + 2 * ring_px) &
-                         cv::Rect(0, 0, labels.cols, labels.rows);
-  cv::Mat near;
-  cv::dilate(object_mask(grown), near,
-             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * ring_px + 1, 2 * ring_px + 1)));
-  near.setTo(0, labels(grown) != 0);
-  for (int v = step / 2; v < labels.rows; v += step) {
-    if (v < grown.y || v >= grown.br().y) continue;
-    const uchar* row = near.ptr<uchar>(v - grown.y);
-    for (int u = step / 2; u < labels.cols; u += step)
-      if (u >= grown.x && u < grown.br().x && row[u - grown.x]) pixels.emplace_back(u, v);
+  if (outer_px <= inner_px) return pixels;
+  // On the sampling grid, one cell per sample (step x step px, the sample at its centre): a cell
+  // holds the object if any of its pixels does. Dilating the grid instead of the image costs
+  // step^3 times less (a full-size 193 px dilation per object doubled the stage's time).
+  const int cols = object_mask.cols / step, rows = object_mask.rows / step;
+  if (cols == 0 || rows == 0) return pixels;
+  cv::Mat cells;
+  cv::resize(object_mask(cv::Rect(0, 0, cols * step, rows * step)), cells, cv::Size(cols, rows), 0,
+             0, cv::INTER_AREA);
+  cells = cells > 0;
+  const auto grow = [&](int radius_cells) {
+    cv::Mat out;
+    cv::dilate(cells, out,
+               cv::getStructuringElement(cv::MORPH_RECT,
+                                         cv::Size(2 * radius_cells + 1, 2 * radius_cells + 1)));
+    return out;
+  };
+  // Beyond the inner gap (rounded up) and within the outer edge (rounded down), in cells.
+  cv::Mat ring = grow(outer_px / step);
+  ring.setTo(0, grow((inner_px + step - 1) / step));
+  for (int r = 0; r < rows; ++r) {
+    const uchar* row = ring.ptr<uchar>(r);
+    for (int c = 0; c < cols; ++c) {
+      const cv::Point p(c * step + step / 2, r * step + step / 2);
+      if (row[c] && labels.at<uint16_t>(p) == 0) pixels.push_back(p);
+    }
   }
   return pixels;
 }

@@ -59,11 +59,14 @@ BackgroundMotion backgroundMotion(const std::vector<Vec3>& p_prev_camera,
                                   const std::vector<Vec3>& p_cur_camera, const SE3& T_cur_prev,
                                   const DynamicsConfig& config);
 
-/// Grid pixels (every `step` px, on sampleMaskPixels' grid) of the background within `ring_px`
-/// (chessboard distance) of an object's mask (CV_8U, non-zero = the object): its surroundings,
-/// with every instance of `labels` (CV_16U, 0 = background) left out.
+/// Grid pixels (every `step` px, on sampleMaskPixels' grid) of the background more than
+/// `inner_px` and at most `outer_px` (chessboard distance) from an object's mask (CV_8U, non-zero
+/// = the object): its surroundings, with every instance of `labels` (CV_16U, 0 = background) left
+/// out. Distances are to the grid's resolution: the inner gap rounded up, the outer edge down,
+/// counted in step x step cells. The inner gap keeps out what a patch-based dense flow fills in
+/// from the object itself.
 std::vector<cv::Point> sampleRingPixels(const cv::Mat& object_mask, const cv::Mat& labels,
-                                        int ring_px, int step);
+                                        int inner_px, int outer_px, int step);
 
 /// Pixels on a regular grid (every `step` px) inside `mask` (CV_8U, non-zero = inside).
 std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);

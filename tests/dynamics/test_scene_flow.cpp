@@ -246,22 +246,26 @@ TEST(SceneFlow, ScatteredSurroundingsRaiseThePointThreshold) {
 }
 
 TEST(SceneFlow, RingPixelsAreTheBackgroundAroundTheObjectOnTheSampleGrid) {
-  cv::Mat labels(100, 120, CV_16U, cv::Scalar(0));
-  labels(cv::Rect(40, 30, 20, 30)).setTo(1);  // the object
-  labels(cv::Rect(60, 30, 15, 30)).setTo(2);  // another instance right beside it
-  const int ring = 10, step = 5;
-  const auto pixels = sampleRingPixels(labels == 1, labels, ring, step);
+  cv::Mat labels(160, 200, CV_16U, cv::Scalar(0));
+  const cv::Rect object(80, 60, 20, 30);
+  labels(object).setTo(1);
+  labels(cv::Rect(100, 60, 15, 30)).setTo(2);  // another instance right beside it
+  const int inner = 10, outer = 30, step = 5;
+  const auto pixels = sampleRingPixels(labels == 1, labels, inner, outer, step);
   ASSERT_FALSE(pixels.empty());
-  const cv::Rect near(40 - ring, 30 - ring, 20 + 2 * ring, 30 + 2 * ring);
+  const auto grown = [&](int px) {
+    return cv::Rect(object.x - px, object.y - px, object.width + 2 * px, object.height + 2 * px);
+  };
   bool left = false;
   for (const cv::Point& p : pixels) {
-    EXPECT_EQ(labels.at<uint16_t>(p), 0) << p;  // neither the object nor the other instance
-    EXPECT_TRUE(near.contains(p)) << p;
+    EXPECT_EQ(labels.at<uint16_t>(p), 0) << p;          // neither the object nor the other instance
+    EXPECT_TRUE(grown(outer + step).contains(p)) << p;  // to the grid's resolution
+    EXPECT_FALSE(grown(inner).contains(p)) << p;        // beyond the inner gap
     EXPECT_EQ(p.x % step, step / 2);
     EXPECT_EQ(p.y % step, step / 2);
-    left = left || p.x < 40;
+    left = left || p.x < object.x;
   }
   EXPECT_TRUE(left);
-  EXPECT_TRUE(sampleRingPixels(labels == 3, labels, ring, step).empty());  // no such instance
-  EXPECT_TRUE(sampleRingPixels(labels == 1, labels, 0, step).empty());     // no ring asked for
+  EXPECT_TRUE(sampleRingPixels(labels == 3, labels, inner, outer, step).empty());  // no object
+  EXPECT_TRUE(sampleRingPixels(labels == 1, labels, inner, inner, step).empty());  // no band
 }

@@ -28,7 +28,7 @@ struct DynamicsConfig {
   int scene_flow_min_points = 10;
   int scene_flow_gap_frames = 3;
   bool scene_flow_mean_check = true;
-  int scene_flow_reference_px = 20;
+  int scene_flow_reference_px = 32;
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
@@ -113,10 +113,10 @@ struct DynamicsConfig {
       "(depth noise moves single points, not the mean)");
     v("scene_flow_reference_px", scene_flow_reference_px,
       "scene flow of an object outside prior_dynamic_classes (a chair, a box) is judged relative "
-      "to the background within this many px of its mask (other instances left out): its median "
-      "displacement is taken off and a point must also move scene_flow_point_sigmas of its "
-      "robust spread (a flow dragged by a walker in front or blurred moves both; 0 = against the "
-      "camera's motion alone)",
+      "to the background in a band this many px wide beyond the dense flow's patch footprint "
+      "around its mask (other instances left out): its median displacement is taken off and a "
+      "point must also move scene_flow_point_sigmas of its robust spread (a flow dragged by a "
+      "walker in front or blurred moves both; 0 = against the camera's motion alone)",
       Range{0, 1000});
     v("cull_vanished_points", cull_vanished_points,
       "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is "
