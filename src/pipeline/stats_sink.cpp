@@ -1,10 +1,10 @@
 // StatsSink: stats.json, assembled here from the records the pipeline returned (FrameResult)
 // and the stage timers; no module builds JSON of its own.
-#include <malloc.h>
 
 #include <sys/resource.h>
 #include <cmath>
 
+#include "core/heap.hpp"
 #include "io/json_io.hpp"
 #include "pipeline/sinks.hpp"
 #include "pipeline/system.hpp"
@@ -110,18 +110,6 @@ void addAudioJson(const AudioFeedbackStats& a, nlohmann::json& stats) {
       {"resampler", a.resampler}};
   if (a.output == "live")
     stats["feedback_audio"]["live"] = {{"device", a.live_device}, {"underruns", a.live_underruns}};
-}
-
-/// Bytes malloc has handed out and not had back (every arena; large mmapped blocks included), in
-/// MiB: the live heap. Resident memory can stay above it after a big transient allocation (a
-/// global bundle adjustment) because freed pages are kept by the allocator.
-double heapInUseMb() {
-#if defined(__GLIBC__)
-  const struct mallinfo2 info = mallinfo2();
-  return double(info.uordblks + info.hblkhd) / (1024.0 * 1024.0);
-#else
-  return -1.0;
-#endif
 }
 
 /// Issue 18: the readout configured and the one estimated online (docs/dynamics.md).

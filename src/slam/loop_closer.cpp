@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "core/heap.hpp"
 #include "slam/global_ba.hpp"
 #include "slam/loop_correction.hpp"
 
@@ -85,8 +86,11 @@ void LoopCloser::globalBundleAdjustment() {
   options.iterations_second = config_.global_ba_iterations;
   const GlobalBaRun run = runGlobalBa(map_, options);
   ++global_bas_;
-  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes, run.points,
-               run.result.initial_rms_px, run.result.final_rms_px);
+  spdlog::info("global BA: {} keyframes, {} points, rms {:.3f} -> {:.3f} px", run.keyframes,
+               run.points, run.result.initial_rms_px, run.result.final_rms_px);
+  // The whole map's problem is a run's largest transient (20-40 MiB on the Bonn window's map):
+  // its pages go back at once rather than at the mapping thread's next periodic release.
+  releaseFreeHeapPages();
   global_ba_running_ = false;
 }
 

@@ -29,6 +29,7 @@ void MappingStage::runPending() {
     queue_.pop_front();
     mapper_.process(kf, !queue_.empty());
     if (sink_) sink_(kf);
+    release_heap_();
   }
 }
 
@@ -83,8 +84,11 @@ void MappingStage::workerLoop() {
     }
     mapper_.process(kf, more_waiting);
     if (sink_) sink_(kf);
-    std::unique_lock lock(queue_mutex_);
-    busy_ = false;
+    {
+      std::unique_lock lock(queue_mutex_);
+      busy_ = false;
+    }
+    release_heap_();
   }
 }
 

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/config/mapping.hpp"
+#include "core/heap.hpp"
 #include "core/timer.hpp"
 #include "slam/local_mapper.hpp"
 
@@ -48,6 +49,9 @@ class MappingStage {
   void drain();
 
   LocalMapper mapper_;
+  /// After a keyframe, on the mapping thread: the allocator's free pages go back every 10 s
+  /// (core/heap.hpp), so a long run's resident memory follows its live heap.
+  PeriodicHeapRelease release_heap_{10.0};
   const bool threaded_;
   const size_t capacity_;
   mutable std::mutex queue_mutex_;
