@@ -34,7 +34,8 @@ TEST(Heap, FreedPagesStayResidentUntilReleased) {
   mallopt(M_TRIM_THRESHOLD, 128 << 20);
   constexpr size_t kBlock = 1 << 20, kBlocks = 64;
   const double heap_before = heapInUseMb();
-  std::vector<std::unique_ptr<char[]> > blocks;
+  using Block = std::unique_ptr<char[]>;
+  std::vector<Block> blocks;
   for (size_t i = 0; i < kBlocks; ++i) {
     blocks.emplace_back(new char[kBlock]);
     std::memset(blocks.back().get(), int(i), kBlock);  // resident
