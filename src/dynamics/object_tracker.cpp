@@ -469,8 +469,24 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // carried by a flow that a walker in front drags along: no evidence either (Bonn: 38 of the
   // 121 chair frames still reported moving, docs/tracking.md "Session 13").
   const bool unmoved_object = !track.prior_dynamic && (!fast || !instance);
+  const bool was_held = track.stationary;
   track.stationary = verified_static || (!sets_off && track.still >= config_.static_after_frames &&
                                          (slow || long_unmoved || unmoved_object));
+  // A person released from being held still: the held state was an assumption, not a
+  // measurement. Its velocity (clamped at zero with a tight covariance) would otherwise ramp up
+  // over the filter's memory, and its centre (predicted at a standstill while the points were
+  // already moving, for as many frames as it took to release it) lags behind: both are reopened,
+  // the velocity to a new track's prior and the centre by a body's size, so the next frames
+  // measure them afresh instead of reading the lag as speed. (Bonn crowd: moving person-frames
+  // in the speed band 968 -> 988 of 1,050; docs/tracking.md "Session 14".) A rigid object found
+  // moving has its velocity reopened before the update, above.
+  if (was_held && !track.stationary && track.prior_dynamic) {
+    KalmanCv::Mat6 Q = KalmanCv::Mat6::Zero();
+    Q.topLeftCorner<3, 3>() = Mat3::Identity() * kUnmeasuredSigmaM * kUnmeasuredSigmaM;
+    Q.bottomRightCorner<3, 3>() =
+        Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
+    track.filter.addCovariance(Q);
+  }
   if (track.stationary) {
     track.filter.holdStill();
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.

@@ -340,6 +340,34 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
   }
 }
 
+TEST(ObjectTracker, AReleasedPersonReadsItsSpeedWithoutARampOrAnOvershoot) {
+  // The same stand-then-walk as above, read right after the release: the held zero velocity
+  // and the centre that lagged at a standstill while the points already moved are assumptions,
+  // reopened at the release, so within a few frames the speed is the walking speed, neither
+  // still ramping up from the held zero nor overshooting on the lag.
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  constexpr float kScale = 2.5f;
+  constexpr int kStart = 20;
+  const double expected = kScale * kSlideSpeedMps;
+  float x = 100.f;
+  int released = -1;
+  for (int i = 0; i < 50; ++i) {
+    const bool moving = i > kStart;
+    SynthFrame f = frame({x}, {true}, i > 0);
+    f.instances.items[0].class_name = "person";
+    if (i > 0) f.flow_half *= moving ? kScale : 0.f;
+    const auto out = step(tracker, f, i, FrameDynamics{});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i > kStart && released < 0 && out[0].dynamic) released = i;
+    if (released >= 0 && i >= released + 3 && i <= released + 10) {
+      EXPECT_GT(out[0].speed_mps, 0.7 * expected) << "frame " << i << ", released at " << released;
+      EXPECT_LT(out[0].speed_mps, 1.4 * expected) << "frame " << i << ", released at " << released;
+    }
+    if (moving) x += kScale * kPixelsPerFrame;
+  }
+  EXPECT_GT(released, kStart) << "never released";
+}
+
 TEST(ObjectTracker, AnObjectThatDoesNotMoveByItselfIsStaticUntilFoundMoving) {
   // A box whose points jitter (they flow 3 px per frame while it stands: a mask's noise, or flow
   // dragged by a walker passing in front) is static from its first frame as long as the dynamics
