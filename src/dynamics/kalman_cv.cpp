@@ -72,6 +72,11 @@ void KalmanCv::holdStill() {
   P_.bottomRightCorner<3, 3>() = Mat3::Identity() * 1e-4;
 }
 
+void KalmanCv::reopen(double position_sigma_m, double velocity_sigma_mps) {
+  P_.topLeftCorner<3, 3>() += Mat3::Identity() * position_sigma_m * position_sigma_m;
+  P_.bottomRightCorner<3, 3>() += Mat3::Identity() * velocity_sigma_mps * velocity_sigma_mps;
+}
+
 double KalmanCv::velocitySigma() const {
   const Mat3 Pv = P_.bottomRightCorner<3, 3>();
   const double lambda =

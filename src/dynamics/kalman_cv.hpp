@@ -41,6 +41,10 @@ class KalmanCv {
   void addCovariance(const Mat6& Q) { P_ += 0.5 * (Q + Q.transpose()); }
   /// Sets the velocity to zero with a small variance (a static object).
   void holdStill();
+  /// Undoes what an assumption about the state claimed to know (holdStill's zero velocity, a
+  /// centre predicted at a standstill): adds isotropic variance (sigma^2) to the position and
+  /// the velocity, so the next measurements set them afresh.
+  void reopen(double position_sigma_m, double velocity_sigma_mps);
 
   [[nodiscard]] Vec3 position() const { return x_.head<3>(); }
   [[nodiscard]] Vec3 velocity() const { return x_.tail<3>(); }

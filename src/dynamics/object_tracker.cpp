@@ -370,10 +370,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // from the clamped zero. (People set off on their points instead: session 10's rule.)
     if (!track.prior_dynamic && track.stationary && instance &&
         contains(input.dynamics.moving_ids, instance->id)) {
-      KalmanCv::Mat6 Q = KalmanCv::Mat6::Zero();
-      Q.bottomRightCorner<3, 3>() =
-          Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
-      track.filter.addCovariance(Q);
+      track.filter.reopen(0.0, kInitialVelocitySigmaMps);
     }
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
@@ -480,13 +477,8 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // measure them afresh instead of reading the lag as speed. (Bonn crowd: moving person-frames
   // in the speed band 968 -> 988 of 1,050; docs/tracking.md "Session 14".) A rigid object found
   // moving has its velocity reopened before the update, above.
-  if (was_held && !track.stationary && track.prior_dynamic) {
-    KalmanCv::Mat6 Q = KalmanCv::Mat6::Zero();
-    Q.topLeftCorner<3, 3>() = Mat3::Identity() * kUnmeasuredSigmaM * kUnmeasuredSigmaM;
-    Q.bottomRightCorner<3, 3>() =
-        Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
-    track.filter.addCovariance(Q);
-  }
+  if (was_held && !track.stationary && track.prior_dynamic)
+    track.filter.reopen(kUnmeasuredSigmaM, kInitialVelocitySigmaMps);
   if (track.stationary) {
     track.filter.holdStill();
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.
