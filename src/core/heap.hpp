@@ -4,8 +4,9 @@
 // mmap and trim thresholds: re-faulting fresh pages for every frame's images cost more than the
 // work on them), so the heap does not shrink by itself. Over a long run the map's objects,
 // allocated and freed as keyframes come and go, scatter through the arenas between the frame
-// buffers: the arenas' free bytes grew from 30 to 58 MiB over ten passes of the Bonn window while
-// the live heap grew by 10 MiB, and the pages of those free chunks stayed resident.
+// buffers: in a paced ten-pass run of the Bonn window the arenas' free bytes grew from 30 to
+// 58 MiB between two loop closures while the live heap grew by 10 MiB, and the pages of those
+// free chunks stayed resident (scratch logging, docs/robustness.md "Session 14").
 #include <chrono>
 
 namespace dynanav {
@@ -15,12 +16,12 @@ namespace dynanav {
 double heapInUseMb();
 
 /// Hands the pages of every free chunk back to the system (every arena, not only the top). They
-/// are faulted in again when next used. Costs a walk over the free lists (about a millisecond
-/// for a few hundred MiB): not for the per-frame path. No-op without glibc.
+/// are faulted in again when next used, and the call walks every free list: not for every
+/// frame. No-op without glibc.
 void releaseFreeHeapPages();
 
 /// releaseFreeHeapPages at most once per period: what jemalloc does by itself (its unused pages
-/// decay after 10 s by default) and glibc does not. Call it from a thread off the frame path.
+/// decay after 10 s by default) and glibc does not.
 class PeriodicHeapRelease {
  public:
   explicit PeriodicHeapRelease(double period_s);

@@ -49,8 +49,9 @@ class MappingStage {
   void drain();
 
   LocalMapper mapper_;
-  /// After a keyframe, on the mapping thread: the allocator's free pages go back every 10 s
-  /// (core/heap.hpp), so a long run's resident memory follows its live heap.
+  /// After a keyframe, on the mapping thread (the frame's own in deterministic runs, where
+  /// timing does not matter): the allocator's free pages go back every 10 s (core/heap.hpp), so
+  /// a long run's resident memory follows its live heap more closely.
   PeriodicHeapRelease release_heap_{10.0};
   const bool threaded_;
   const size_t capacity_;
