@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/median.hpp"
+
 namespace dynanav {
 namespace {
 
@@ -55,11 +57,11 @@ std::optional<PersonExtent> personExtent(const cv::Mat& labels, const Instance& 
       if (row[x] == instance.id) columns.push_back(x);
   }
   if (columns.empty()) return std::nullopt;
-  std::nth_element(columns.begin(), columns.begin() + long(columns.size() / 2), columns.end());
+  const int median_column = medianInPlace(columns);
   PersonExtent extent;
   extent.top_px = top - 0.5;
   extent.bottom_px = bottom + 0.5;
-  extent.column_px = columns[columns.size() / 2];
+  extent.column_px = median_column;
   return extent;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "core/median.hpp"
 #include "dynamics/depth_difference.hpp"
 #include "dynamics/depth_tolerance.hpp"
 #include "dynamics/moving_evidence.hpp"
@@ -31,8 +32,7 @@ float medianDepth(const cv::Mat& depth_m, const cv::Mat& mask) {
       if (m[x] && d[x] > 0.f && std::isfinite(d[x])) values.push_back(d[x]);
   }
   if (values.empty()) return 0.f;
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
+  return medianInPlace(values);
 }
 
 /// Pixels of `box` whose depth lies within `band_m` of `centre_m`, set to 255 in `out`.

@@ -4,14 +4,10 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "core/median.hpp"
+
 namespace dynanav {
 namespace {
-
-double median(std::vector<double> values) {
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + long(mid), values.end());
-  return values[mid];
-}
 
 /// The box spanned by shoulders and hips, when all four were found.
 std::optional<cv::Rect> trunkBox(const Instance& instance) {
@@ -108,7 +104,7 @@ std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth
   std::vector<double> z;
   z.reserve(p_camera.size());
   for (const Vec3& p : p_camera) z.push_back(p.z());
-  const double z_median = median(z);
+  const double z_median = medianInPlace(z);
   std::vector<double> xs, ys, zs;
   for (const Vec3& p : p_camera) {
     if (std::abs(p.z() - z_median) > depth_band_m) continue;
@@ -117,7 +113,7 @@ std::optional<Vec3> objectCentre(const std::vector<Vec3>& p_camera, double depth
     zs.push_back(p.z());
   }
   if (xs.empty()) return std::nullopt;
-  const Vec3 surface(median(xs), median(ys), median(zs));
+  const Vec3 surface(medianInPlace(xs), medianInPlace(ys), medianInPlace(zs));
   return surface + behind_m * surface.normalized();
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/median.hpp"
 #include "dynamics/height_range.hpp"
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_motion.hpp"
@@ -67,8 +68,7 @@ double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv
         if (std::isfinite(d) && d > 0.f) z.push_back(d);
       }
   if (z.empty()) return 0.0;
-  std::nth_element(z.begin(), z.begin() + long(z.size() / 2), z.end());
-  return z[z.size() / 2];
+  return medianInPlace(z);
 }
 
 }  // namespace
@@ -263,8 +263,7 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   if (valid.empty()) return;
   // Pixels of a mask that spills over its outline see the background far behind: only points
   // within depth_band_m of the object's median depth are the object's.
-  std::nth_element(valid.begin(), valid.begin() + long(valid.size() / 2), valid.end());
-  const float z_median = valid[valid.size() / 2];
+  const float z_median = medianInPlace(valid);
   for (size_t i = 0; i < pixels.size(); ++i) {
     if (z[i] <= 0.f || std::abs(z[i] - z_median) > float(config_.depth_band_m)) continue;
     track.pixels.push_back(pixels[i]);

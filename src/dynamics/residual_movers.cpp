@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "core/median.hpp"
 #include "dynamics/keypoint_dynamics.hpp"
 
 namespace dynanav {
@@ -28,11 +29,7 @@ Eigen::Vector2d medianNormalised(const std::vector<int>& keypoints,
     u.push_back(residuals[i].du_px / residuals[i].sigma_px);
     v.push_back(residuals[i].dv_px / residuals[i].sigma_px);
   }
-  auto median = [](std::vector<double>& x) {
-    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-    return x[x.size() / 2];
-  };
-  return {median(u), median(v)};
+  return {medianInPlace(u), medianInPlace(v)};
 }
 
 /// The median normalised residual of the young keypoints outside `region` (zero if fewer than

@@ -7,16 +7,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/frame.hpp"
+#include "core/median.hpp"
 
 namespace dynanav {
-namespace {
-double median(std::vector<double>& values) {
-  const auto mid = values.begin() + long(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
-}  // namespace
-
 double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config) {
   const double sigma_prev = config.depth_noise_per_z2 * z_prev_m * z_prev_m;
   const double sigma_cur = config.depth_noise_per_z2 * z_cur_m * z_cur_m;
@@ -72,12 +65,12 @@ BackgroundMotion backgroundMotion(const std::vector<Vec3>& p_prev_camera,
   std::vector<double> values(n);
   for (int a = 0; a < 3; ++a) {
     for (size_t i = 0; i < n; ++i) values[i] = flows[i][a];
-    motion.displacement_m[a] = median(values);
+    motion.displacement_m[a] = medianInPlace(values);
   }
   // The median length of the residuals is 1.538 sigma for a 3D Gaussian of sigma per axis: a
   // scale that ignores the few background points a walker's flow drags along.
   for (size_t i = 0; i < n; ++i) values[i] = (flows[i] - motion.displacement_m).norm();
-  motion.sigma_m = median(values) / 1.538;
+  motion.sigma_m = medianInPlace(values) / 1.538;
   return motion;
 }
 

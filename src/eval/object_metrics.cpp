@@ -5,6 +5,8 @@
 #include <set>
 #include <tuple>
 
+#include "core/median.hpp"
+
 namespace dynanav {
 namespace {
 
@@ -160,8 +162,7 @@ std::vector<TrackSpeedShare> trackSpeedShares(const std::vector<ObjectsFrame>& e
   for (auto& [id, s] : shares) {
     auto& v = speeds[id];
     if (!v.empty()) {
-      std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-      s.median_speed_mps = v[v.size() / 2];
+      s.median_speed_mps = medianInPlace(v);
     }
     out.push_back(s);
   }
