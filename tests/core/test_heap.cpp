@@ -7,18 +7,10 @@
 #include <vector>
 
 #include "core/timer.hpp"
+#include "support/heap_figures.hpp"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
-#endif
-
-// Under AddressSanitizer its own allocator serves malloc: the glibc figures do not apply.
-#if defined(__SANITIZE_ADDRESS__)
-#define DYNANAV_SANITIZED_HEAP 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define DYNANAV_SANITIZED_HEAP 1
-#endif
 #endif
 
 namespace dynanav {
@@ -27,7 +19,7 @@ namespace {
 // The allocator settings of apps/dynanav/main.cpp keep freed buffers resident; releasing the
 // free pages must bring resident memory back down while the live heap is unchanged.
 TEST(Heap, FreedPagesStayResidentUntilReleased) {
-#if !defined(__GLIBC__) || defined(DYNANAV_SANITIZED_HEAP)
+#if !DYNANAV_GLIBC_HEAP
   GTEST_SKIP() << "the heap figures and the release need glibc's allocator";
 #else
   mallopt(M_MMAP_THRESHOLD, 32 << 20);

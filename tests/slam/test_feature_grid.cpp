@@ -8,15 +8,7 @@
 #include <vector>
 
 #include "core/heap.hpp"
-
-// Under AddressSanitizer its own allocator serves malloc: glibc's heap figures do not apply.
-#if defined(__SANITIZE_ADDRESS__)
-#define DYNANAV_SANITIZED_HEAP 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define DYNANAV_SANITIZED_HEAP 1
-#endif
-#endif
+#include "support/heap_figures.hpp"
 
 namespace dynanav {
 namespace {
@@ -80,7 +72,7 @@ TEST(FeatureGrid, FindsExactlyWhatAFullScanFinds) {
 // Every keyframe keeps its grid for as long as the map keeps the keyframe: a grid of a frame's
 // 1,000 keypoints must cost a few arrays, not a vector per cell (which came to about 100 KiB).
 TEST(FeatureGrid, AKeyframesGridCostsLittleMemory) {
-#if !defined(__GLIBC__) || defined(DYNANAV_SANITIZED_HEAP)
+#if !DYNANAV_GLIBC_HEAP
   GTEST_SKIP() << "the heap figure needs glibc's allocator";
 #else
   const Keypoints k = randomKeypoints(1000, 3);
