@@ -30,12 +30,16 @@ SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageT
 
 void SlamSystem::setUpPlaceRecognition() {
   const LoopConfig& loop = config_.loop;
-  if (!loop.relocalisation && !loop.loop_closing) return;
+  if (!loop.relocalisation && !loop.loop_closing) {
+    place_recognition_off_ = "loop.relocalisation and loop.loop_closing are false";
+    return;
+  }
   try {
     vocabulary_ = std::make_shared<const Vocabulary>(
         Vocabulary::load(findVocabulary(loop.vocabulary).string()));
   } catch (const InputError& e) {
     spdlog::warn("relocalisation and loop closing disabled: {}", e.what());
+    place_recognition_off_ = e.what();
     return;
   }
   places_ = std::make_unique<PlaceIndex>(vocabulary_, loop);

@@ -5,6 +5,7 @@
 // puts mover rejection (dynamics) between the initial pose and the local map; every lock is
 // taken in here, never by the caller.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/camera.hpp"
@@ -88,6 +89,12 @@ class SlamSystem {
   }
   /// Loops closed so far (issue 4); empty when loop closing is off or has no vocabulary.
   [[nodiscard]] std::vector<LoopEvent> loops() const;
+  /// Why relocalisation and loop closing are off ("" when the vocabulary loaded): the run's
+  /// stats say so, since a run without them loses the camera for good in places it could
+  /// have recovered.
+  [[nodiscard]] const std::string& placeRecognitionOffReason() const {
+    return place_recognition_off_;
+  }
 
  private:
   /// Issue 4: vocabulary, keyframe database, relocaliser and loop closer, if the vocabulary loads.
@@ -105,6 +112,7 @@ class SlamSystem {
   std::unique_ptr<PlaceIndex> places_;
   std::unique_ptr<Relocaliser> relocaliser_;
   std::unique_ptr<LoopCloser> loop_closer_;
+  std::string place_recognition_off_;
   uint64_t next_frame_id_ = 0;
   bool finished_ = false;
   TrajectoryAnchors anchors_;  ///< one per tracked frame

@@ -51,6 +51,8 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
   const auto stats_on = readJsonFile(on / "stats.json");
   const auto stats_off = readJsonFile(off / "stats.json");
   EXPECT_EQ(stats_off["loops"], 0);
+  EXPECT_EQ(stats_on["place_recognition"]["on"], true);
+  EXPECT_EQ(stats_on["place_recognition"]["off_reason"], "");
   ASSERT_GE(stats_on["loops"].get<int>(), 1) << "the loop is detected";
   // The loop closes when the wearer is back near the start (the last ~15 % of the walk).
   const int frames = stats_on["frames"].get<int>();
@@ -64,7 +66,7 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
   EXPECT_LE(drift_on * 5.0, drift_off);
 }
 
-TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarning) {
+TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarningAndInStats) {
   const fs::path seq = test::scratchDir("loop_novoc_seq");
   std::string log;
   ASSERT_EQ(test::runCli(
@@ -86,6 +88,9 @@ TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarning) {
   EXPECT_NE(log.find("missing.dnvoc"), std::string::npos) << "names the file";
   const auto stats = readJsonFile(out / "stats.json");
   EXPECT_EQ(stats["loops"], 0);
+  EXPECT_EQ(stats["place_recognition"]["on"], false) << "stats.json says so too";
+  EXPECT_NE(stats["place_recognition"]["off_reason"].get<std::string>().find("missing.dnvoc"),
+            std::string::npos);
 }
 
 }  // namespace
