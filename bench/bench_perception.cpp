@@ -5,7 +5,8 @@
 // Each benchmark runs once over the frames (image decoding excluded) and reports, as counters,
 // the median / p90 per frame and the median of every step, so the question "where does the
 // time go" has an answer: pre-processing (resize + blob), forward, post-processing (decode +
-// NMS), per-box crop / forward / decode, flow / warp / depth. Arguments: OpenCV threads
+// NMS), per-box crop / forward / decode, flow / warp / depth; the frame preparation (grey images
+// and the tracker's dense flow). Arguments: OpenCV threads
 // (cv::setNumThreads) and, for the detector, the input side.
 //   build/<dir>/bin/bench_perception [--benchmark_filter=Detector]
 // DYNANAV_BENCH_FRAMES=N limits the frames (default: all 500).
@@ -24,6 +25,7 @@
 
 #include "core/timer.hpp"
 #include "io/sequence.hpp"
+#include "perception/frame_prep.hpp"
 #include "perception/model_files.hpp"
 #include "perception/propagation.hpp"
 #include "perception/segmenters.hpp"
@@ -47,15 +49,20 @@ double processCpuMs() {
 /// As `dynanav segment` does: keep freed frame-sized buffers in the heap (fresh pages cost
 /// page faults; see docs/perception.md). DYNANAV_BENCH_DEFAULT_MALLOC=1 keeps glibc's defaults.
 const bool kAllocatorTuned = [] {
-  if (const char* env = std::getenv("DYNANAV_BENCH_DEFAULT_MALLOC"); env && std::string(env) == "1") return false;
+  if (const char* env = std::getenv("DYNANAV_BENCH_DEFAULT_MALLOC"); env && std::string(env) == "1")
+    return false;
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 128 << 20);
   return true;
 }();
 
-fs::path bonnDir() { return fs::path(DYNANAV_SHARED_DIR) / "data" / "rgbd_bonn_crowd"; }
+fs::path bonnDir() {
+  return fs::path(DYNANAV_SHARED_DIR) / "data" / "rgbd_bonn_crowd";
+}
 
-fs::path modelsDir() { return findModelsDir("", dnnModelFiles(true)); }
+fs::path modelsDir() {
+  return findModelsDir("", dnnModelFiles(true));
+}
 
 size_t frameLimit(size_t available) {
   const char* env = std::getenv("DYNANAV_BENCH_FRAMES");
@@ -70,7 +77,8 @@ class Samples {
     for (auto& [step, v] : samples_) {
       std::sort(v.begin(), v.end());
       state.counters[step + "_med"] = v[v.size() / 2];
-      if (step == "frame") state.counters["frame_p90"] = v[std::min(v.size() - 1, v.size() * 9 / 10)];
+      if (step == "frame")
+        state.counters["frame_p90"] = v[std::min(v.size() - 1, v.size() * 9 / 10)];
     }
     if (samples_.count("frame")) state.counters["frames"] = double(samples_["frame"].size());
     state.counters["malloc_tuned"] = kAllocatorTuned ? 1 : 0;
@@ -122,8 +130,11 @@ void BM_Detector(benchmark::State& state) {
   });
   s.report(state);
 }
-BENCHMARK(BM_Detector)->ArgsProduct({{1, 2}, {320, 288, 256}})->ArgNames({"threads", "input"})
-    ->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Detector)
+    ->ArgsProduct({{1, 2}, {320, 288, 256}})
+    ->ArgNames({"threads", "input"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 /// detector + selfie masks + depth refinement + MoveNet; medians over all frames and over the
 /// frames with exactly two people, plus per-person costs.
@@ -161,10 +172,15 @@ void BM_DnnSegmenter(benchmark::State& state) {
   s.report(state);
 }
 BENCHMARK(BM_DnnSegmenter)
-    ->Args({2, 1, 1, 320})->Args({2, 1, 1, 288})->Args({2, 1, 1, 256})
-    ->Args({2, 1, 0, 320})->Args({1, 1, 0, 320})->Args({2, 0, 1, 320})
+    ->Args({2, 1, 1, 320})
+    ->Args({2, 1, 1, 288})
+    ->Args({2, 1, 1, 256})
+    ->Args({2, 1, 0, 320})
+    ->Args({1, 1, 0, 320})
+    ->Args({2, 0, 1, 320})
     ->ArgNames({"threads", "keypoints", "parallel", "input"})
-    ->Iterations(1)->Unit(benchmark::kMillisecond);
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 /// The per-box networks alone on the first person box of each frame: crop, forward, decode.
 void BM_BoxModels(benchmark::State& state) {
@@ -195,7 +211,12 @@ void BM_BoxModels(benchmark::State& state) {
   });
   s.report(state);
 }
-BENCHMARK(BM_BoxModels)->Arg(2)->Arg(1)->ArgName("threads")->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BoxModels)
+    ->Arg(2)
+    ->Arg(1)
+    ->ArgName("threads")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 /// Propagation of the previous frame's dnn labels to the next frame (labels from the segmenter
 /// computed outside the timed region), at flow scale 1/2 (default) and 1/4.
@@ -227,8 +248,36 @@ void BM_Propagation(benchmark::State& state) {
   });
   s.report(state);
 }
-BENCHMARK(BM_Propagation)->ArgsProduct({{1, 2}, {2, 4}})->ArgNames({"threads", "flow_div"})
-    ->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Propagation)
+    ->ArgsProduct({{1, 2}, {2, 4}})
+    ->ArgNames({"threads", "flow_div"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+/// The per-frame preparation whose dense flow carries the tracker's object points
+/// (perception/frame_prep.hpp: grey, half-size grey, DIS ultrafast flow), at DIS's finest
+/// pyramid level 2 (the preset's; 8 px patches cover 64 px of the full image) and 1 (32 px),
+/// the `objects.flow_finest_scale` setting. One OpenCV thread: the CPU cost of the choice.
+void BM_FramePrep(benchmark::State& state) {
+  cv::setNumThreads(1);
+  FramePrep prep({.half = true, .flow = true, .flow_finest_scale = int(state.range(0))});
+  Samples s;
+  forEachFrame(state, [&](const RgbdFrame& f) {
+    const auto t0 = Clock::now();
+    const double c0 = processCpuMs();
+    const PreparedFrame out = prep.prepare(f);
+    s.add("frame", msSince(t0));
+    s.add("frame_cpu", processCpuMs() - c0);
+    benchmark::DoNotOptimize(out.flow_half.data);
+  });
+  s.report(state);
+}
+BENCHMARK(BM_FramePrep)
+    ->Arg(2)
+    ->Arg(1)
+    ->ArgName("finest_scale")
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 /// Pre-processing alone: blobFromImage resizing the 640x480 frame itself vs. resize + blob.
 void BM_Preprocess(benchmark::State& state) {
@@ -238,7 +287,8 @@ void BM_Preprocess(benchmark::State& state) {
   cv::Mat small, blob;
   for (auto _ : state) {
     if (state.range(0) == 0) {
-      blob = cv::dnn::blobFromImage(frame, 1.0 / 255, cv::Size(320, 320), cv::Scalar(), true, false);
+      blob =
+          cv::dnn::blobFromImage(frame, 1.0 / 255, cv::Size(320, 320), cv::Scalar(), true, false);
     } else {
       cv::resize(frame, small, cv::Size(320, 320), 0, 0, cv::INTER_LINEAR);
       cv::dnn::blobFromImage(small, blob, 1.0 / 255, cv::Size(), cv::Scalar(), true, false);

@@ -3,6 +3,8 @@
 # seeds 1-3) and pushed-box (300 frames), runs them with --segmenter masks (clean, and noisy masks:
 # dilate / erode 5 px, 20 % of instances dropped), and prints dynanav eval-objects' summary lines.
 # Usage: scripts/tracking_results.sh [WORK_DIR]   (default /tmp/dynanav_tracking)
+# EXTRA_CONFIG: YAML appended to every row's config (sections other than tracking and
+# perception), e.g. EXTRA_CONFIG=$'objects:\n  gate_missed: false\n' for an A/B of one key.
 set -euo pipefail
 B=${DYNANAV:-$(dirname "$0")/../build/release/bin/dynanav}
 W=${1:-/tmp/dynanav_tracking}
@@ -14,6 +16,7 @@ printf "$common" > "$W/clean.yaml"
 for g in 5 -5; do
   printf "${common}perception:\n  mask_noise_grow_px: %s\n  mask_noise_drop_share: 0.2\n" "$g" > "$W/noisy$g.yaml"
 done
+for c in clean noisy5 noisy-5; do printf '%s' "${EXTRA_CONFIG:-}" >> "$W/$c.yaml"; done
 row() {  # row SEQ CONFIG
   local out="$W/run_$(basename "$1")_$(basename "$2" .yaml)"
   "$B" run "$1" --out "$out" --segmenter masks --deterministic --quiet --config "$2" 2>/dev/null

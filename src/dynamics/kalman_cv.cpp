@@ -41,28 +41,44 @@ void KalmanCv::predict(double dt_s) {
   P_ = F * P_ * F.transpose() + processNoise(dt_s);
 }
 
-void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
-                      const std::optional<Mat3>& position_cov_world) {
+KalmanCv::Innovation KalmanCv::innovation(const Vec3& p_world,
+                                          const std::optional<Vec3>& v_world_mps,
+                                          const std::optional<Mat3>& position_cov_world) const {
   const int m = v_world_mps ? 6 : 3;
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 6);
-  H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
+  Innovation in;
+  in.H = Eigen::MatrixXd::Zero(m, 6);
+  in.H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
   Eigen::VectorXd z(m);
   z.head<3>() = p_world;
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
-  R.topLeftCorner<3, 3>() = position_cov_world.value_or(Mat3::Identity() * noise_.position_sigma_m *
-                                                        noise_.position_sigma_m);
+  in.R = Eigen::MatrixXd::Zero(m, m);
+  in.R.topLeftCorner<3, 3>() = position_cov_world.value_or(
+      Mat3::Identity() * noise_.position_sigma_m * noise_.position_sigma_m);
   if (v_world_mps) {
     z.tail<3>() = *v_world_mps;
-    R.bottomRightCorner<3, 3>() =
+    in.R.bottomRightCorner<3, 3>() =
         Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
   }
-  const Eigen::VectorXd y = z - H * x_;
-  const Eigen::MatrixXd S = H * P_ * H.transpose() + R;
-  const Eigen::MatrixXd K = P_ * H.transpose() * S.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
-  x_ += K * y;
+  in.y = z - in.H * x_;
+  in.S = in.H * P_ * in.H.transpose() + in.R;
+  return in;
+}
+
+void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+                      const std::optional<Mat3>& position_cov_world) {
+  const Innovation in = innovation(p_world, v_world_mps, position_cov_world);
+  const auto m = in.y.size();
+  const Eigen::MatrixXd K =
+      P_ * in.H.transpose() * in.S.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+  x_ += K * in.y;
   // Joseph form: stays symmetric positive semi-definite.
-  const Mat6 I_KH = Mat6::Identity() - K * H;
-  P_ = I_KH * P_ * I_KH.transpose() + K * R * K.transpose();
+  const Mat6 I_KH = Mat6::Identity() - K * in.H;
+  P_ = I_KH * P_ * I_KH.transpose() + K * in.R * K.transpose();
+}
+
+double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+                                      const std::optional<Mat3>& position_cov_world) const {
+  const Innovation in = innovation(p_world, v_world_mps, position_cov_world);
+  return in.y.dot(in.S.ldlt().solve(in.y));
 }
 
 void KalmanCv::holdStill() {

@@ -36,6 +36,12 @@ class KalmanCv {
   /// replaces the configured isotropic noise of this one position measurement.
   void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
               const std::optional<Mat3>& position_cov_world = std::nullopt);
+  /// The squared Mahalanobis distance of that measurement from the prediction (its normalised
+  /// innovation, chi-square with 3 or 6 degrees of freedom when the filter is consistent):
+  /// how far outside what the covariance allows a measurement lies, before it is used.
+  [[nodiscard]] double normalisedInnovation(
+      const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+      const std::optional<Mat3>& position_cov_world = std::nullopt) const;
   /// Adds Q to the state's covariance: uncertainty the measurements so far shared and the filter
   /// was not told of (the stature behind every height range of one person, object_tracker.cpp).
   void addCovariance(const Mat6& Q) { P_ += 0.5 * (Q + Q.transpose()); }
@@ -57,6 +63,13 @@ class KalmanCv {
  private:
   [[nodiscard]] Mat6 transition(double dt_s) const;
   [[nodiscard]] Mat6 processNoise(double dt_s) const;
+  struct Innovation {
+    Eigen::MatrixXd H, R;
+    Eigen::VectorXd y;  ///< measurement minus prediction
+    Eigen::MatrixXd S;  ///< its covariance
+  };
+  [[nodiscard]] Innovation innovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+                                      const std::optional<Mat3>& position_cov_world) const;
   KalmanCvNoise noise_;
   Vec6 x_ = Vec6::Zero();
   Mat6 P_ = Mat6::Identity();

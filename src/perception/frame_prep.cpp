@@ -22,7 +22,10 @@ PreparedFrame FramePrep::prepare(const RgbdFrame& frame) {
   PreparedFrame out = prepareFrame(frame, needs_.half || needs_.flow);
   if (!needs_.flow) return out;
   if (!previous_half_.empty() && previous_half_.size() == out.grey_half.size()) {
-    if (!dis_) dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
+    if (!dis_) {
+      dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
+      dis_->setFinestScale(needs_.flow_finest_scale);
+    }
     dis_->calc(previous_half_, out.grey_half, out.flow_half);
   }
   previous_half_ = out.grey_half;

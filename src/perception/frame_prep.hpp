@@ -24,6 +24,9 @@ class FramePrep {
   struct Needs {
     bool half = false;  ///< grey_half
     bool flow = false;  ///< flow_half (implies half)
+    /// DIS's finest pyramid level (the ultrafast preset's is 2): its 8 px patches there cover
+    /// 2^(level+1) * 8 px of the full image, and a finer level follows a narrow object better.
+    int flow_finest_scale = 2;
   };
   explicit FramePrep(Needs needs) : needs_(needs) {}
   PreparedFrame prepare(const RgbdFrame& frame);

@@ -20,7 +20,9 @@ System::System(const Config& config, const PinholeCamera& camera,
     : config_(config),
       camera_(camera),
       dynamic_(config.run.dynamic),
-      prep_({.half = config.run.dynamic, .flow = config.run.dynamic && config.objects.enabled}) {
+      prep_({.half = config.run.dynamic,
+             .flow = config.run.dynamic && config.objects.enabled,
+             .flow_finest_scale = config.objects.flow_finest_scale}) {
   if (dynamic_) {
     SegmenterRequest request;
     request.name = config.run.segmenter;
@@ -59,7 +61,7 @@ void System::finish() {
 FrameResult System::process(const RgbdFrame& input) {
   ScopedTimer processing(timers_, "frame");
   FrameResult result;
-  const PreparedFrame prep = prep_.prepare(input);        // 1. grey images (and flow), once
+  const PreparedFrame prep = prepare(input);              // 1. grey images (and flow), once
   result.instances = segment(input);                      // 2. segment (or propagate)
   const cv::Mat allowed = extractionMask(input, result);  // 3. ORB off prior and known movers
   Frame frame = extractFeatures(prep, input, allowed, result.instances);
@@ -80,6 +82,11 @@ FrameResult System::process(const RgbdFrame& input) {
   result.stamp_s = input.stamp_s;
   result.latency_ms = processing.stop();
   return result;  // 11. sinks consume it
+}
+
+PreparedFrame System::prepare(const RgbdFrame& input) {
+  ScopedTimer timer(timers_, "prep");
+  return prep_.prepare(input);
 }
 
 Instances System::segment(const RgbdFrame& input) {

@@ -49,6 +49,7 @@ class System {
   [[nodiscard]] const std::string& segmenterName() const { return segmenter_name_; }
 
  private:
+  PreparedFrame prepare(const RgbdFrame& input);
   Instances segment(const RgbdFrame& input);
   cv::Mat extractionMask(const RgbdFrame& input, FrameResult& result);
   Frame extractFeatures(const PreparedFrame& prep, const RgbdFrame& input, const cv::Mat& allowed,

@@ -254,11 +254,14 @@ TEST(ObjectTracker, ASilhouetteBorderedByANearerObjectGetsNoRange) {
   }
   // Depth at 3.9 m on the left third of the mask (a quarter of the sampled points: fewer than
   // min_depth_share): that depth, far nearer than the 10 m the height says, rules the height
-  // out; the centre stays unknown in every component.
+  // out; the centre stays unknown in every component. (So few points place no centre by
+  // default, objects.centre_min_points; allowed here to see what the range rule leaves.)
   depth.setTo(0.f);
   depth(cv::Rect(300, 300, 5, 85)).setTo(3.9f);
   {
-    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    ObjectTrackingConfig few_points;
+    few_points.centre_min_points = 1;
+    ObjectTracker tracker(few_points, 5);
     const auto out =
         tracker.track({0, 0.0, instances, dynamics, no_flow, depth, SE3::Identity(), true, c});
     ASSERT_EQ(out.size(), 1u);

@@ -129,6 +129,20 @@ TEST(KalmanCv, PositionOnlyUpdatesInferVelocity) {
   EXPECT_NEAR(filter.velocity().x(), 0.8, 0.05);
 }
 
+TEST(KalmanCv, NormalisedInnovationIsTheMeasurementsMahalanobisDistance) {
+  // A new filter at the origin: position variance 0.05^2, velocity 1^2 per axis; the
+  // measurement noises are 0.05 m and 0.6 m/s. A centre 0.1 m off along x: 0.1^2 / (2 * 0.05^2)
+  // = 2; with a velocity of 1 m/s along x as well: + 1 / (1 + 0.36).
+  const KalmanCvNoise noise{0.5, 0.05, 0.6, 1.0};
+  const KalmanCv filter(Vec3::Zero(), noise);
+  EXPECT_NEAR(filter.normalisedInnovation(Vec3(0.1, 0, 0), std::nullopt), 2.0, 1e-9);
+  EXPECT_NEAR(filter.normalisedInnovation(Vec3(0.1, 0, 0), Vec3(1, 0, 0)), 2.0 + 1.0 / 1.36, 1e-9);
+  // A wider measurement covariance makes the same offset less surprising.
+  EXPECT_NEAR(
+      filter.normalisedInnovation(Vec3(0.1, 0, 0), std::nullopt, Mat3::Identity() * 0.15 * 0.15),
+      0.01 / (0.0025 + 0.0225), 1e-9);
+}
+
 TEST(KalmanCv, AReopenedHeldFilterFollowsTheNextMeasurementsAtOnce) {
   // Held still at the origin while the object already moved 0.2 m and walks at 1 m/s along x:
   // reopened, the filter reads the speed within a few frames and the centre's lag enters the

@@ -11,6 +11,9 @@ struct ObjectTrackingConfig {
   int max_points = 400;
   int trunk_min_points = 20;
   int max_missed_frames = 15;
+  bool gate_missed = true;
+  int centre_min_points = 8;
+  int flow_finest_scale = 1;
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
   double centre_behind_surface_m = 0.15;
@@ -41,6 +44,16 @@ struct ObjectTrackingConfig {
     v("max_missed_frames", max_missed_frames,
       "a track the segmenter misses is carried by its flow points for at most this many frames",
       Range{0, 1000});
+    v("gate_missed", gate_missed,
+      "a track the segmenter misses takes its flow points' centre and motion only when they lie "
+      "within the filter's 99.9 % chi-square gate; otherwise it coasts on its prediction");
+    v("centre_min_points", centre_min_points,
+      "fewest points with depth that place an object's centre (fewer: no centre this frame)",
+      Range{1, 100000});
+    v("flow_finest_scale", flow_finest_scale,
+      "the tracker's dense flow (DIS on half-size images): finest pyramid level; its 8 px "
+      "patches cover 2^(level+1) * 8 px of the full image (2: 64 px, 1: 32 px, more CPU)",
+      Range{0, 6});
     v("match_min_score", match_min_score,
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id",
       Range{0, 2});
