@@ -75,6 +75,18 @@ void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mp
   P_ = I_KH * P_ * I_KH.transpose() + K * in.R * K.transpose();
 }
 
+void KalmanCv::updateVelocity(const Vec3& v_world_mps) {
+  Eigen::Matrix<double, 3, 6> H = Eigen::Matrix<double, 3, 6>::Zero();
+  H.rightCols<3>() = Mat3::Identity();
+  const Mat3 R = Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
+  const Vec3 y = v_world_mps - x_.tail<3>();
+  const Mat3 S = H * P_ * H.transpose() + R;
+  const Eigen::Matrix<double, 6, 3> K = P_ * H.transpose() * S.inverse();
+  x_ += K * y;
+  const Mat6 I_KH = Mat6::Identity() - K * H;
+  P_ = I_KH * P_ * I_KH.transpose() + K * R * K.transpose();
+}
+
 double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
                                       const std::optional<Mat3>& position_cov_world) const {
   const Innovation in = innovation(p_world, v_world_mps, position_cov_world);

@@ -36,6 +36,8 @@ class KalmanCv {
   /// replaces the configured isotropic noise of this one position measurement.
   void update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
               const std::optional<Mat3>& position_cov_world = std::nullopt);
+  /// A velocity measurement alone (with the configured one-frame velocity noise).
+  void updateVelocity(const Vec3& v_world_mps);
   /// The squared Mahalanobis distance of that measurement from the prediction (its normalised
   /// innovation, chi-square with 3 or 6 degrees of freedom when the filter is consistent):
   /// how far outside what the covariance allows a measurement lies, before it is used.

@@ -115,6 +115,9 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
     if (!claimed[m])
       if (auto t = start(items[m], input)) tracks_.push_back(std::move(*t));
   previous_labels_ = input.instances.labels.clone();
+  previous_ = input.tracked && config_.first_frame_motion
+                  ? PreviousDepthFrame{input.depth_m.clone(), input.T_world_camera, input.stamp_s}
+                  : PreviousDepthFrame{};
   std::vector<TrackedObject> out;
   out.reserve(tracks_.size());
   for (const Track& t : tracks_) out.push_back(report(t, input));
@@ -311,16 +314,9 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
   std::optional<Vec3> v_measured;
   if (dt > 0.0) {
-    ObjectMotionOptions options;
-    options.ransac_iterations = config_.ransac_iterations;
-    options.reprojection_px = config_.ransac_reprojection_px;
-    options.huber_px = config_.refine_huber_px;
-    options.refine_iterations = config_.refine_iterations;
-    options.min_points = config_.min_motion_points;
-    options.seed = uint64_t(input.frame_index) * 7919u + track.id;  // same run, same answer
-    const ObjectMotion motion =
-        estimateObjectMotion(kept.p_prev_world, kept.pixels, T_camera_world, input.camera,
-                             track.motion, options, kept_depth_m);
+    const ObjectMotion motion = estimateObjectMotion(
+        kept.p_prev_world, kept.pixels, T_camera_world, input.camera, track.motion,
+        motionOptions(input.frame_index, track.id), kept_depth_m);
     if (motion.ok) {
       Vec3 c = Vec3::Zero();
       for (size_t i = 0; i < motion.inlier.size(); ++i)
@@ -499,6 +495,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
 }
 
+ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) const {
+  ObjectMotionOptions options;
+  options.ransac_iterations = config_.ransac_iterations;
+  options.reprojection_px = config_.ransac_reprojection_px;
+  options.huber_px = config_.refine_huber_px;
+  options.refine_iterations = config_.refine_iterations;
+  options.min_points = config_.min_motion_points;
+  options.seed = uint64_t(frame_index) * 7919u + id;  // same run, same answer
+  return options;
+}
+
 KalmanCvNoise ObjectTracker::filterNoise() const {
   return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
           kInitialVelocitySigmaMps};
@@ -534,6 +541,21 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
     t.still = config_.static_after_frames;
   t.stationary = t.still >= config_.static_after_frames;
   t.id = next_id_++;
+  // Moving from its first frame (not placed by its height): its motion since the previous
+  // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). Not for
+  // one entering at the image's side: the sliver in view measures its motion badly (the
+  // simulated crossing's walker read 2.5 m/s toward the camera, walking across it at 1.4), and
+  // the prior says less that is wrong.
+  if (!t.stationary && t.ranged_scale_sigma <= 0.0 &&
+      cutSide(instance, input.instances.labels.cols) == 0)
+    if (const auto first = firstFrameMotion(
+            {instance, input.instances.labels, input.flow_half, input.depth_m, input.T_world_camera,
+             input.stamp_s, input.camera, previous_, sample_step_px_, config_.depth_band_m},
+            motionOptions(input.frame_index, t.id))) {
+      t.filter.updateVelocity(first->v_world_mps);
+      t.motion = first->H_world;
+      t.inliers = first->inliers;
+    }
   return t;
 }
 

@@ -17,6 +17,7 @@
 #include "core/config/objects.hpp"
 #include "core/se3.hpp"
 #include "core/tracked_object.hpp"
+#include "dynamics/first_motion.hpp"
 #include "dynamics/frame_dynamics.hpp"
 #include "dynamics/kalman_cv.hpp"
 #include "dynamics/object_points.hpp"
@@ -86,6 +87,8 @@ class ObjectTracker {
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
   /// The filter's velocity has been narrowed from its prior (0 +- 1 m/s) by measurements.
   [[nodiscard]] bool filterVelocityKnown(const Track& track) const;
+  /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.
+  [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;
   /// The configured noise of a track's filter (a new track, or one restarted at a centre).
   [[nodiscard]] KalmanCvNoise filterNoise() const;
   struct Centre {
@@ -115,6 +118,7 @@ class ObjectTracker {
   uint64_t next_id_ = 1;
   std::vector<Track> tracks_;  // ordered by id
   cv::Mat previous_labels_;
+  PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
 };
 
 }  // namespace dynanav

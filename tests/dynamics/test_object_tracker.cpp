@@ -521,3 +521,35 @@ TEST(ObjectTracker, AMissedPersonWhoseCarriedPointsJumpCoastsOnItsPrediction) {
     x += seen ? kPixelsPerFrame : kDraggedPixelsPerFrame;
   }
 }
+
+TEST(ObjectTracker, ANewTrackReadsItsSpeedInItsFirstFrame) {
+  // A person walks in view for 10 frames before the segmenter first finds them (a late
+  // detection, a mask dropped as noisy): in that first frame the track's velocity is measured
+  // from the previous frame's points the flow carries onto the mask, not left at its prior
+  // (0 +- 1 m/s, which reported a walker as standing).
+  constexpr float kScale = 2.5f;
+  const double expected = kScale * kSlideSpeedMps;
+  for (const bool first_frame_motion : {false, true}) {
+    ObjectTrackingConfig config;
+    config.first_frame_motion = first_frame_motion;
+    ObjectTracker tracker(config, 5);
+    float x = 100.f;
+    for (int i = 0; i <= 10; ++i) {
+      const bool seen = i == 10;
+      SynthFrame f = frame({x}, {seen}, i > 0);
+      if (seen) f.instances.items[0].class_name = "person";
+      if (i > 0) f.flow_half *= kScale;
+      const auto out = step(tracker, f, i);
+      if (!seen) {
+        ASSERT_TRUE(out.empty()) << "frame " << i;
+      } else {
+        ASSERT_EQ(out.size(), 1u);
+        if (first_frame_motion)
+          EXPECT_GT(out[0].speed_mps, 0.6 * expected) << "measured in the first frame";
+        else
+          EXPECT_LT(out[0].speed_mps, 0.05) << "the prior's zero";
+      }
+      x += kScale * kPixelsPerFrame;
+    }
+  }
+}

@@ -12,6 +12,7 @@ struct ObjectTrackingConfig {
   int trunk_min_points = 20;
   int max_missed_frames = 15;
   bool gate_missed = true;
+  bool first_frame_motion = true;
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   double match_min_score = 0.3;
@@ -47,6 +48,9 @@ struct ObjectTrackingConfig {
     v("gate_missed", gate_missed,
       "a track the segmenter misses takes its flow points' centre and motion only when they lie "
       "within the filter's 99.9 % chi-square gate; otherwise it coasts on its prediction");
+    v("first_frame_motion", first_frame_motion,
+      "a new moving track's velocity is measured in its first frame, from the previous frame's "
+      "points the flow carries onto its mask (else it starts at its prior, 0 +- 1 m/s)");
     v("centre_min_points", centre_min_points,
       "fewest points with depth that place an object's centre (fewer: no centre this frame)",
       Range{1, 100000});
