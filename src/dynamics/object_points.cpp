@@ -78,6 +78,12 @@ ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
   return {std::move(points), trunk};
 }
 
+int instanceCutSide(const Instance& instance, int image_cols) {
+  const bool left = instance.box.x <= 1;
+  const bool right = instance.box.x + instance.box.width >= image_cols - 1;
+  return left == right ? 0 : (left ? -1 : 1);
+}
+
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel) {
   if (!flow_half.empty()) {
     // Half-size pixel centres: (u + 0.5) / 2 - 0.5.

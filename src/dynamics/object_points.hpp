@@ -34,6 +34,10 @@ struct ObjectSample {
 ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
                                 const SampleOptions& options);
 
+/// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both):
+/// an object cut by the image's side shows only part of itself.
+int instanceCutSide(const Instance& instance, int image_cols);
+
 /// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
 /// false when it leaves the image.
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel);

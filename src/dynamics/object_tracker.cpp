@@ -14,13 +14,6 @@
 namespace dynanav {
 namespace {
 
-/// How far the centre lies behind the visible surface: a person's half thickness (config); for
-/// other objects half their visible width (a box or chair is about as deep as it is wide).
-double behindSurface(const std::string& class_name, const std::vector<Vec3>& p_camera,
-                     const ObjectTrackingConfig& config) {
-  return class_name == "person" ? config.centre_behind_surface_m : 0.5 * objectWidth(p_camera);
-}
-
 bool contains(const std::vector<uint16_t>& sorted_ids, uint16_t id) {
   return std::binary_search(sorted_ids.begin(), sorted_ids.end(), id);
 }
@@ -31,18 +24,6 @@ uint16_t labelAt(const cv::Mat& labels, const Eigen::Vector2d& pixel) {
   return labels.at<uint16_t>(y, x);
 }
 
-/// A standing adult's height (m): with the median depth of a person's mask, how tall the whole
-/// person would be in the image when the head or the feet are out of view (trunk band).
-constexpr double kPersonHeightM = 1.7;
-/// Noise (m) of a centre component the visible part does not measure (an object cut by the
-/// image's side: sideways; a person without the trunk in view: the height): a body's size.
-constexpr double kUnmeasuredSigmaM = 1.0;
-
-/// A silhouette bordered over more than this share of its outline by something nearer than the
-/// person is taken as partly hidden (height_range.hpp, nearerOutlineShare): a free one borders
-/// nothing nearer; one hidden along a side or below, tens of percent.
-constexpr double kMaxNearerOutlineShare = 0.05;
-
 /// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
 constexpr double kInitialVelocitySigmaMps = 1.0;
 
@@ -51,27 +32,6 @@ constexpr double kInitialVelocitySigmaMps = 1.0;
 constexpr double kChiSquare3Dof999 = 16.27;
 /// The same with 6 degrees of freedom (position and velocity).
 constexpr double kChiSquare6Dof999 = 22.46;
-
-/// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both).
-int cutSide(const Instance& instance, int image_cols) {
-  const bool left = instance.box.x <= 1;
-  const bool right = instance.box.x + instance.box.width >= image_cols - 1;
-  return left == right ? 0 : (left ? -1 : 1);
-}
-
-double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv::Mat& depth_m,
-                       int step) {
-  std::vector<float> z;
-  const cv::Rect box = instance.box & cv::Rect(0, 0, labels.cols, labels.rows);
-  for (int y = box.y; y < box.y + box.height; y += step)
-    for (int x = box.x; x < box.x + box.width; x += step)
-      if (labels.at<uint16_t>(y, x) == instance.id) {
-        const float d = depth_m.at<float>(y, x);
-        if (std::isfinite(d) && d > 0.f) z.push_back(d);
-      }
-  if (z.empty()) return 0.0;
-  return medianInPlace(z);
-}
 
 }  // namespace
 
@@ -184,99 +144,6 @@ std::vector<int> ObjectTracker::associate(const ObjectTrackerInput& input,
     item_taken[m] = 1;
   }
   return match;
-}
-
-std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
-    const Track& track, const std::vector<Vec3>& p_camera, const Instance* instance,
-    const ObjectTrackerInput& input) const {
-  // Most of a person's mask without usable depth (beyond the sensor's range), head and feet in
-  // view: its pixel height and a stature prior give the range (height_range.hpp) until depth
-  // covers the mask.
-  const bool little_depth = instance && track.depth_share < config_.min_depth_share;
-  if (little_depth && track.class_name == "person")
-    if (const auto extent = personExtent(input.instances.labels, *instance)) {
-      const Mat3 R_world_camera = input.T_world_camera.linear();
-      // Up: the first camera's (the world frame's) -y, seen from this camera.
-      const Vec3 up_camera = R_world_camera.transpose() * Vec3(0.0, -1.0, 0.0);
-      const auto range = rangeFromHeight(*extent, input.camera, up_camera);
-      // Depth of the mask, or of what borders it, nearer than the range allows (2 sigma): not a
-      // whole person (an arm beside a cabinet in the simulated crossing read 10 m at 3.9 m).
-      const double nearest_z_m = range ? range->p_camera.z() - 2.0 * range->sigma_range_m : 0.0;
-      const double z_mask_m =
-          medianMaskDepth(*instance, input.instances.labels, input.depth_m, sample_step_px_);
-      if (range && !(z_mask_m > 0.0 && z_mask_m < nearest_z_m) &&
-          nearerOutlineShare(input.instances.labels, input.depth_m, instance->id, instance->box,
-                             nearest_z_m) < kMaxNearerOutlineShare)
-        return Centre{range->p_camera,
-                      R_world_camera * range->cov_frame_camera * R_world_camera.transpose(),
-                      range->scale_sigma, true};
-    }
-  if (p_camera.size() < size_t(config_.centre_min_points)) return std::nullopt;
-  auto centre = objectCentre(p_camera, config_.depth_band_m,
-                             behindSurface(track.class_name, p_camera, config_));
-  if (!centre) return std::nullopt;
-  // An object cut by the image's left or right edge shows only part of itself: the centre of
-  // what is seen slides sideways with the edge (a walker entering the view would seem to move at
-  // several m/s while the visible part grows), and its depth is that of the part in view (a
-  // leading shoulder and arm), not the body's: in the simulated crossing it started 0.35 m too
-  // far and closed on the truth over 0.3 s, a false 1 m/s approach. Its height is still
-  // measured; its sideways position and depth count as unknown, and the filter keeps the motion
-  // the rigid-motion velocity measures until the object is wholly in view.
-  // Likewise the height of a person of whom only the legs or an arm were sampled (the trunk not
-  // in view): the centre of the whole mask is not the trunk's. And all of the centre when most
-  // of the mask has no usable depth (a walker entering the sensor's range shows depth on the
-  // nearest limb first: its centre sits beside and in front of the body's, and would move at
-  // a walking speed sideways while the rest comes into range).
-  const bool cut = instance && cutSide(*instance, input.instances.labels.cols) != 0;
-  const bool no_trunk = instance && track.class_name == "person" && !track.trunk;
-  if (!cut && !no_trunk && !little_depth) return Centre{*centre, std::nullopt, 0.0, true};
-  const double s2 = config_.position_sigma_m * config_.position_sigma_m;
-  const double u2 = kUnmeasuredSigmaM * kUnmeasuredSigmaM;
-  const Mat3 cov_camera = Vec3(cut || little_depth ? u2 : s2, no_trunk || little_depth ? u2 : s2,
-                               cut || little_depth ? u2 : s2)
-                              .asDiagonal();
-  const Mat3 R_world_camera = input.T_world_camera.linear();
-  return Centre{*centre, R_world_camera * cov_camera * R_world_camera.transpose(), 0.0,
-                !cut && !little_depth};
-}
-
-ObjectSample ObjectTracker::samplePixels(const Instance& instance,
-                                         const ObjectTrackerInput& input) const {
-  SampleOptions options{sample_step_px_, config_.max_points, config_.trunk_min_points};
-  if (instance.class_name == "person")
-    if (const double z =
-            medianMaskDepth(instance, input.instances.labels, input.depth_m, 2 * sample_step_px_);
-        z > 0.0)
-      options.person_height_px = kPersonHeightM * input.camera.fy / z;
-  return sampleObjectPixels(input.instances.labels, instance, options);
-}
-
-void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
-                         const ObjectTrackerInput& input) const {
-  track.pixels.clear();
-  track.p_world.clear();
-  track.voters.clear();
-  track.depth_share = 0.0;
-  std::vector<float> z(pixels.size());
-  std::vector<float> valid;
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    z[i] = depthAt(input.depth_m, pixels[i]);
-    if (z[i] > 0.f)
-      valid.push_back(z[i]);
-    else
-      track.voters.push_back(pixels[i]);
-  }
-  if (valid.empty()) return;
-  // Pixels of a mask that spills over its outline see the background far behind: only points
-  // within depth_band_m of the object's median depth are the object's.
-  const float z_median = medianInPlace(valid);
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    if (z[i] <= 0.f || std::abs(z[i] - z_median) > float(config_.depth_band_m)) continue;
-    track.pixels.push_back(pixels[i]);
-    track.p_world.push_back(input.T_world_camera *
-                            input.camera.backproject(pixels[i].x, pixels[i].y, z[i]));
-  }
-  track.depth_share = double(track.pixels.size()) / double(pixels.size());
 }
 
 void ObjectTracker::update(Track& track, const Carried& carried, const Instance* instance,
@@ -547,7 +414,7 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   // simulated crossing's walker read 2.5 m/s toward the camera, walking across it at 1.4), and
   // the prior says less that is wrong.
   if (!t.stationary && t.ranged_scale_sigma <= 0.0 &&
-      cutSide(instance, input.instances.labels.cols) == 0)
+      instanceCutSide(instance, input.instances.labels.cols) == 0)
     if (const auto first = firstFrameMotion(
             {instance, input.instances.labels, input.flow_half, input.depth_m, input.T_world_camera,
              input.stamp_s, input.camera, previous_, sample_step_px_, config_.depth_band_m},

@@ -112,6 +112,10 @@ class ObjectTracker {
             const ObjectTrackerInput& input) const;
   TrackedObject report(const Track& track, const ObjectTrackerInput& input) const;
 
+  /// Noise (m) of a centre component the visible part does not measure (an object cut by the
+  /// image's side: sideways; a person without the trunk in view: the height): a body's size.
+  static constexpr double kUnmeasuredSigmaM = 1.0;
+
   ObjectTrackingConfig config_;
   int sample_step_px_ = 5;
   std::vector<std::string> prior_dynamic_classes_;

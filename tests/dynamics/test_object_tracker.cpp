@@ -422,7 +422,9 @@ TEST(ObjectTracker, AMissedObjectCarriedOnMovingFlowIsStaticWithoutAVerdict) {
     const auto out = step(tracker, f, i, dynamics);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i >= 10) x += i > 20 ? kDraggedPixelsPerFrame : kPixelsPerFrame;
-    if (i == 20 + config.static_after_frames - 1) EXPECT_GT(out[0].speed_mps, 0.5);
+    if (i == 20 + config.static_after_frames - 1) {
+      EXPECT_GT(out[0].speed_mps, 0.5);
+    }
     EXPECT_TRUE(!pushed || out[0].dynamic) << "frame " << i;
     EXPECT_TRUE(i < 20 + config.static_after_frames || !out[0].dynamic) << "frame " << i;
   }
@@ -517,7 +519,9 @@ TEST(ObjectTracker, AMissedPersonWhoseCarriedPointsJumpCoastsOnItsPrediction) {
     if (seen) dynamics.moving_ids.push_back(1);
     const auto out = step(tracker, f, i, dynamics);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
-    if (i >= 30) EXPECT_NEAR(out[0].speed_mps, kSlideSpeedMps, 0.1) << "frame " << i;
+    if (i >= 30) {
+      EXPECT_NEAR(out[0].speed_mps, kSlideSpeedMps, 0.1) << "frame " << i;
+    }
     x += seen ? kPixelsPerFrame : kDraggedPixelsPerFrame;
   }
 }
@@ -544,10 +548,11 @@ TEST(ObjectTracker, ANewTrackReadsItsSpeedInItsFirstFrame) {
         ASSERT_TRUE(out.empty()) << "frame " << i;
       } else {
         ASSERT_EQ(out.size(), 1u);
-        if (first_frame_motion)
+        if (first_frame_motion) {
           EXPECT_GT(out[0].speed_mps, 0.6 * expected) << "measured in the first frame";
-        else
+        } else {
           EXPECT_LT(out[0].speed_mps, 0.05) << "the prior's zero";
+        }
       }
       x += kScale * kPixelsPerFrame;
     }
