@@ -12,7 +12,8 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
   const PreviousDepthFrame& previous = input.previous;
   const double dt = input.stamp_s - previous.stamp_s;
   if (previous.depth_m.empty() || input.flow_half.empty() || !(dt > 0.0) ||
-      previous.depth_m.size() != input.depth_m.size())
+      previous.depth_m.size() != input.depth_m.size() ||
+      input.labels.size() != input.depth_m.size())
     return std::nullopt;
   const cv::Size size = input.depth_m.size();
   const int margin = int(std::lround(input.search_margin_px));
