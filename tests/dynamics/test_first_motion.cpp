@@ -10,12 +10,9 @@ namespace {
 
 constexpr int kW = 640, kH = 480;
 
+/// fx = fy = 525, centre (319.5, 239.5), no distortion: PinholeCamera's defaults.
 PinholeCamera camera() {
-  PinholeCamera c;
-  c.fx = c.fy = 525.0;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
+  return PinholeCamera{};
 }
 
 /// Depth of a 60 x 120 px block at 2 m (with a relief) whose left edge is at `left`, in front of

@@ -11,12 +11,9 @@ using namespace dynanav;
 
 namespace {
 
+/// fx = fy = 525, centre (319.5, 239.5), no distortion: PinholeCamera's defaults.
 PinholeCamera camera() {
-  PinholeCamera c;
-  c.fx = c.fy = 525.0;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
+  return PinholeCamera{};
 }
 
 /// A person-sized blob of points 3 m in front of a camera at T_world_camera.

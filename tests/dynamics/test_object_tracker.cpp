@@ -14,12 +14,9 @@ constexpr float kPixelsPerFrame = 3.f;
 /// The synthetic object's speed: kPixelsPerFrame at its 2.03 m mean depth, fx 525, 30 frames/s.
 constexpr double kSlideSpeedMps = kPixelsPerFrame * 2.03 / 525.0 * 30.0;
 
+/// fx = fy = 525, centre (319.5, 239.5), no distortion: PinholeCamera's defaults.
 PinholeCamera camera() {
-  PinholeCamera c;
-  c.fx = c.fy = 525.0;
-  c.cx = 319.5;
-  c.cy = 239.5;
-  return c;
+  return PinholeCamera{};
 }
 
 struct SynthFrame {
