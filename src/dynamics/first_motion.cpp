@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "core/median.hpp"
 #include "dynamics/object_points.hpp"
 
 namespace dynanav {
@@ -25,7 +24,7 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
   std::vector<cv::Point2f> from;
   std::vector<Eigen::Vector2d> to;
   std::vector<float> z_from;
-  std::vector<double> z_to;
+  std::vector<float> z_to;
   const int step = std::max(1, input.step_px);
   for (int y = region.y; y < region.y + region.height; y += step)
     for (int x = region.x; x < region.x + region.width; x += step) {
@@ -44,14 +43,14 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
       z_to.push_back(z1);
     }
   if (int(from.size()) < options.min_points) return std::nullopt;
-  // A mask that spills over its outline sees the background behind: only points within the
-  // band of the object's median depth are the object's (as the tracker's own points).
-  const double z_median = medianOf(z_to);
+  // Only points within the band of the object's median depth are the object's, as for the
+  // tracker's own points.
+  const std::vector<uint8_t> keep = withinDepthBand(z_to, input.depth_band_m);
   std::vector<Vec3> p_prev_world;
   std::vector<Eigen::Vector2d> pixels;
   std::vector<double> depth_now;
   for (size_t i = 0; i < from.size(); ++i) {
-    if (std::abs(z_to[i] - z_median) > input.depth_band_m) continue;
+    if (!keep[i]) continue;
     p_prev_world.push_back(previous.T_world_camera *
                            input.camera.backproject(from[i].x, from[i].y, z_from[i]));
     pixels.push_back(to[i]);
@@ -62,11 +61,8 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
       estimateObjectMotion(p_prev_world, pixels, input.T_world_camera.inverse(), input.camera,
                            SE3::Identity(), options, depth_now);
   if (!motion.ok) return std::nullopt;
-  Vec3 c = Vec3::Zero();
-  for (size_t i = 0; i < motion.inlier.size(); ++i)
-    if (motion.inlier[i]) c += p_prev_world[i];
-  c /= double(motion.inliers);
-  return FirstMotion{centroidDisplacement(motion.H_world, c) / dt, motion.H_world, motion.inliers};
+  return FirstMotion{inlierCentroidVelocity(motion, p_prev_world, dt), motion.H_world,
+                     motion.inliers};
 }
 
 }  // namespace dynanav

@@ -41,31 +41,36 @@ void KalmanCv::predict(double dt_s) {
   P_ = F * P_ * F.transpose() + processNoise(dt_s);
 }
 
-KalmanCv::Innovation KalmanCv::innovation(const Vec3& p_world,
-                                          const std::optional<Vec3>& v_world_mps,
-                                          const std::optional<Mat3>& position_cov_world) const {
-  const int m = v_world_mps ? 6 : 3;
+KalmanCv::Innovation KalmanCv::innovation(Eigen::MatrixXd H, const Eigen::VectorXd& z,
+                                          Eigen::MatrixXd R) const {
   Innovation in;
-  in.H = Eigen::MatrixXd::Zero(m, 6);
-  in.H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
-  Eigen::VectorXd z(m);
-  z.head<3>() = p_world;
-  in.R = Eigen::MatrixXd::Zero(m, m);
-  in.R.topLeftCorner<3, 3>() = position_cov_world.value_or(
-      Mat3::Identity() * noise_.position_sigma_m * noise_.position_sigma_m);
-  if (v_world_mps) {
-    z.tail<3>() = *v_world_mps;
-    in.R.bottomRightCorner<3, 3>() =
-        Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
-  }
-  in.y = z - in.H * x_;
-  in.S = in.H * P_ * in.H.transpose() + in.R;
+  in.y = z - H * x_;
+  in.S = H * P_ * H.transpose() + R;
+  in.H = std::move(H);
+  in.R = std::move(R);
   return in;
 }
 
-void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
-                      const std::optional<Mat3>& position_cov_world) {
-  const Innovation in = innovation(p_world, v_world_mps, position_cov_world);
+KalmanCv::Innovation KalmanCv::centreInnovation(
+    const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+    const std::optional<Mat3>& position_cov_world) const {
+  const int m = v_world_mps ? 6 : 3;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, 6);
+  H.leftCols(m) = Eigen::MatrixXd::Identity(m, m);
+  Eigen::VectorXd z(m);
+  z.head<3>() = p_world;
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
+  R.topLeftCorner<3, 3>() = position_cov_world.value_or(Mat3::Identity() * noise_.position_sigma_m *
+                                                        noise_.position_sigma_m);
+  if (v_world_mps) {
+    z.tail<3>() = *v_world_mps;
+    R.bottomRightCorner<3, 3>() =
+        Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
+  }
+  return innovation(std::move(H), z, std::move(R));
+}
+
+void KalmanCv::correct(const Innovation& in) {
   const auto m = in.y.size();
   const Eigen::MatrixXd K =
       P_ * in.H.transpose() * in.S.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
@@ -75,21 +80,21 @@ void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mp
   P_ = I_KH * P_ * I_KH.transpose() + K * in.R * K.transpose();
 }
 
+void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
+                      const std::optional<Mat3>& position_cov_world) {
+  correct(centreInnovation(p_world, v_world_mps, position_cov_world));
+}
+
 void KalmanCv::updateVelocity(const Vec3& v_world_mps) {
-  Eigen::Matrix<double, 3, 6> H = Eigen::Matrix<double, 3, 6>::Zero();
-  H.rightCols<3>() = Mat3::Identity();
-  const Mat3 R = Mat3::Identity() * noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
-  const Vec3 y = v_world_mps - x_.tail<3>();
-  const Mat3 S = H * P_ * H.transpose() + R;
-  const Eigen::Matrix<double, 6, 3> K = P_ * H.transpose() * S.inverse();
-  x_ += K * y;
-  const Mat6 I_KH = Mat6::Identity() - K * H;
-  P_ = I_KH * P_ * I_KH.transpose() + K * R * K.transpose();
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, 6);
+  H.rightCols(3) = Eigen::MatrixXd::Identity(3, 3);
+  const double r = noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
+  correct(innovation(std::move(H), v_world_mps, Eigen::MatrixXd::Identity(3, 3) * r));
 }
 
 double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
                                       const std::optional<Mat3>& position_cov_world) const {
-  const Innovation in = innovation(p_world, v_world_mps, position_cov_world);
+  const Innovation in = centreInnovation(p_world, v_world_mps, position_cov_world);
   return in.y.dot(in.S.ldlt().solve(in.y));
 }
 

@@ -65,13 +65,20 @@ class KalmanCv {
  private:
   [[nodiscard]] Mat6 transition(double dt_s) const;
   [[nodiscard]] Mat6 processNoise(double dt_s) const;
+  /// A linear measurement z = H x + noise (R), and its innovation against the current state.
   struct Innovation {
     Eigen::MatrixXd H, R;
     Eigen::VectorXd y;  ///< measurement minus prediction
     Eigen::MatrixXd S;  ///< its covariance
   };
-  [[nodiscard]] Innovation innovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
-                                      const std::optional<Mat3>& position_cov_world) const;
+  [[nodiscard]] Innovation innovation(Eigen::MatrixXd H, const Eigen::VectorXd& z,
+                                      Eigen::MatrixXd R) const;
+  /// The centre (and velocity) measurement of update() and normalisedInnovation().
+  [[nodiscard]] Innovation centreInnovation(const Vec3& p_world,
+                                            const std::optional<Vec3>& v_world_mps,
+                                            const std::optional<Mat3>& position_cov_world) const;
+  /// The Kalman correction with that innovation (Joseph form).
+  void correct(const Innovation& in);
   KalmanCvNoise noise_;
   Vec6 x_ = Vec6::Zero();
   Mat6 P_ = Mat6::Identity();

@@ -107,6 +107,15 @@ Vec3 centroidDisplacement(const SE3& H_world, const Vec3& c_world) {
   return H_world.translation() - (Mat3::Identity() - H_world.linear()) * c_world;
 }
 
+Vec3 inlierCentroidVelocity(const ObjectMotion& motion, const std::vector<Vec3>& p_prev_world,
+                            double dt_s) {
+  Vec3 c = Vec3::Zero();
+  for (size_t i = 0; i < motion.inlier.size(); ++i)
+    if (motion.inlier[i]) c += p_prev_world[i];
+  c /= double(motion.inliers);
+  return centroidDisplacement(motion.H_world, c) / dt_s;  // v = (t - (I - R) c) / dt
+}
+
 ObjectMotion estimateObjectMotion(const std::vector<Vec3>& p_prev_world,
                                   const std::vector<Eigen::Vector2d>& pixels,
                                   const SE3& T_camera_world, const PinholeCamera& camera,

@@ -46,4 +46,9 @@ ObjectMotion estimateObjectMotion(const std::vector<Vec3>& p_prev_world,
 /// Displacement of the point c under H: t - (I - R) c (= H c - c).
 Vec3 centroidDisplacement(const SE3& H_world, const Vec3& c_world);
 
+/// The velocity (m/s, world) of the centroid of `motion`'s inliers among `p_prev_world` (the
+/// points it was estimated from) over dt_s: the object's measured velocity. Needs motion.ok.
+Vec3 inlierCentroidVelocity(const ObjectMotion& motion, const std::vector<Vec3>& p_prev_world,
+                            double dt_s);
+
 }  // namespace dynanav

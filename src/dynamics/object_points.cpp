@@ -78,6 +78,18 @@ ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
   return {std::move(points), trunk};
 }
 
+std::vector<uint8_t> withinDepthBand(const std::vector<float>& z_m, double band_m) {
+  std::vector<float> valid;
+  for (float z : z_m)
+    if (z > 0.f) valid.push_back(z);
+  std::vector<uint8_t> keep(z_m.size(), 0);
+  if (valid.empty()) return keep;
+  const float z_median = medianInPlace(valid);
+  for (size_t i = 0; i < z_m.size(); ++i)
+    keep[i] = z_m[i] > 0.f && std::abs(z_m[i] - z_median) <= float(band_m);
+  return keep;
+}
+
 int instanceCutSide(const Instance& instance, int image_cols) {
   const bool left = instance.box.x <= 1;
   const bool right = instance.box.x + instance.box.width >= image_cols - 1;

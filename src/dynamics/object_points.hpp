@@ -38,6 +38,10 @@ ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
 /// an object cut by the image's side shows only part of itself.
 int instanceCutSide(const Instance& instance, int image_cols);
 
+/// Which of the depths `z_m` (0 or less: none) lie within band_m of the median of those with
+/// depth: a mask that spills over its outline sees the background behind, not the object.
+std::vector<uint8_t> withinDepthBand(const std::vector<float>& z_m, double band_m);
+
 /// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
 /// false when it leaves the image.
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel);

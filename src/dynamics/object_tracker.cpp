@@ -185,11 +185,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
         kept.p_prev_world, kept.pixels, T_camera_world, input.camera, track.motion,
         motionOptions(input.frame_index, track.id), kept_depth_m);
     if (motion.ok) {
-      Vec3 c = Vec3::Zero();
-      for (size_t i = 0; i < motion.inlier.size(); ++i)
-        if (motion.inlier[i]) c += kept.p_prev_world[i];
-      c /= double(motion.inliers);
-      v_measured = centroidDisplacement(motion.H_world, c) / dt;  // v = (t - (I - R) c) / dt
+      v_measured = inlierCentroidVelocity(motion, kept.p_prev_world, dt);
       track.motion = motion.H_world;
       track.inliers = motion.inliers;
     } else {

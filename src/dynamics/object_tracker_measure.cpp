@@ -115,20 +115,14 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   track.voters.clear();
   track.depth_share = 0.0;
   std::vector<float> z(pixels.size());
-  std::vector<float> valid;
   for (size_t i = 0; i < pixels.size(); ++i) {
     z[i] = depthAt(input.depth_m, pixels[i]);
-    if (z[i] > 0.f)
-      valid.push_back(z[i]);
-    else
-      track.voters.push_back(pixels[i]);
+    if (!(z[i] > 0.f)) track.voters.push_back(pixels[i]);
   }
-  if (valid.empty()) return;
-  // Pixels of a mask that spills over its outline see the background far behind: only points
-  // within depth_band_m of the object's median depth are the object's.
-  const float z_median = medianInPlace(valid);
+  if (track.voters.size() == pixels.size()) return;  // no depth at all (or no pixels)
+  const std::vector<uint8_t> keep = withinDepthBand(z, config_.depth_band_m);
   for (size_t i = 0; i < pixels.size(); ++i) {
-    if (z[i] <= 0.f || std::abs(z[i] - z_median) > float(config_.depth_band_m)) continue;
+    if (!keep[i]) continue;
     track.pixels.push_back(pixels[i]);
     track.p_world.push_back(input.T_world_camera *
                             input.camera.backproject(pixels[i].x, pixels[i].y, z[i]));

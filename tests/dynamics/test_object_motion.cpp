@@ -27,6 +27,24 @@ std::vector<Vec3> blob(int n, const Vec3& centre_world, std::mt19937& rng) {
 
 }  // namespace
 
+TEST(ObjectMotion, InlierCentroidVelocityLeavesOutliersOut) {
+  // A rotation about the inliers' centroid (1, 0, 4): it stays, so the velocity is zero; the
+  // outlier far away would move the centroid, and with it the velocity, were it counted.
+  const Vec3 c(1.0, 0.0, 4.0);
+  ObjectMotion motion;
+  motion.ok = true;
+  const Mat3 R = Eigen::AngleAxisd(0.2, Vec3::UnitY()).toRotationMatrix();
+  motion.H_world.linear() = R;
+  motion.H_world.translation() = c - R * c;
+  const std::vector<Vec3> p_prev{c + Vec3(0.1, 0, 0), c - Vec3(0.1, 0, 0), Vec3(5, 5, 5)};
+  motion.inlier = {1, 1, 0};
+  motion.inliers = 2;
+  EXPECT_LT(inlierCentroidVelocity(motion, p_prev, 1.0 / 30.0).norm(), 1e-9);
+  motion.inlier = {1, 1, 1};
+  motion.inliers = 3;
+  EXPECT_GT(inlierCentroidVelocity(motion, p_prev, 1.0 / 30.0).norm(), 1.0);
+}
+
 TEST(ObjectMotion, CentroidDisplacementOfKnownRigidMotions) {
   const Vec3 c(1.0, -0.5, 4.0);
   // Pure translation: the centroid moves by t.

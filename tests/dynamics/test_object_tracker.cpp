@@ -187,6 +187,15 @@ TEST(ObjectTracker, APartialViewDoesNotPlaceTheCentre) {
   }
 }
 
+TEST(ObjectPoints, DepthBandKeepsThePointsNearTheMedianDepthThatHaveDepth) {
+  // A body at 2 m seen through a mask that spills onto the wall at 4 m, and two pixels without
+  // depth: only the points within 0.5 m of the median (the upper one, 2.2 m) are kept.
+  const std::vector<float> z_m{2.0f, 2.1f, 0.f, 1.95f, 4.0f, 2.2f, -1.f, 2.8f};
+  const std::vector<uint8_t> expected{1, 1, 0, 1, 0, 1, 0, 0};
+  EXPECT_EQ(withinDepthBand(z_m, 0.5), expected);
+  EXPECT_EQ(withinDepthBand({0.f, 0.f}, 0.5), (std::vector<uint8_t>{0, 0}));
+}
+
 TEST(ObjectPoints, TrunkBandOfAPersonWhoseFeetAreOutOfView) {
   // A person 400 px tall at its depth whose box (top at row 200) is cut by the image's bottom:
   // the trunk is 20-50 % of the whole height below the head (rows 280-400), not of the box.
