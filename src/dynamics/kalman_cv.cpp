@@ -92,6 +92,18 @@ void KalmanCv::updateVelocity(const Vec3& v_world_mps) {
   correct(innovation(std::move(H), v_world_mps, Eigen::MatrixXd::Identity(3, 3) * r));
 }
 
+void KalmanCv::updateVelocityAcross(const Vec3& v_world_mps, const Vec3& ray_world) {
+  // Rows: an orthonormal basis of the plane normal to the ray, applied to the velocity.
+  const Vec3 ray = ray_world.normalized();
+  const Vec3 u = ray.unitOrthogonal(), w = ray.cross(u);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(2, 6);
+  H.block<1, 3>(0, 3) = u.transpose();
+  H.block<1, 3>(1, 3) = w.transpose();
+  const Eigen::Vector2d z(u.dot(v_world_mps), w.dot(v_world_mps));
+  const double r = noise_.velocity_sigma_mps * noise_.velocity_sigma_mps;
+  correct(innovation(std::move(H), z, Eigen::MatrixXd::Identity(2, 2) * r));
+}
+
 double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
                                       const std::optional<Mat3>& position_cov_world) const {
   const Innovation in = centreInnovation(p_world, v_world_mps, position_cov_world);

@@ -38,6 +38,9 @@ class KalmanCv {
               const std::optional<Mat3>& position_cov_world = std::nullopt);
   /// A velocity measurement alone (with the configured one-frame velocity noise).
   void updateVelocity(const Vec3& v_world_mps);
+  /// The same for the two components of the velocity across `ray_world` (the line of sight):
+  /// the component along it is not measured (a sliver's motion, biased along the ray).
+  void updateVelocityAcross(const Vec3& v_world_mps, const Vec3& ray_world);
   /// The squared Mahalanobis distance of that measurement from the prediction (its normalised
   /// innovation, chi-square with 3 or 6 degrees of freedom when the filter is consistent):
   /// how far outside what the covariance allows a measurement lies, before it is used.

@@ -405,17 +405,23 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   t.stationary = t.still >= config_.static_after_frames;
   t.id = next_id_++;
   // Moving from its first frame (not placed by its height): its motion since the previous
-  // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). Not for
-  // one entering at the image's side: the sliver in view measures its motion badly (the
-  // simulated crossing's walker read 2.5 m/s toward the camera, walking across it at 1.4), and
-  // the prior says less that is wrong.
-  if (!t.stationary && t.ranged_scale_sigma <= 0.0 &&
-      instanceCutSide(instance, input.instances.labels.cols) == 0)
+  // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). One
+  // entering at the image's side measures only its velocity across the line of sight: the
+  // sliver in view reads motion along it badly (the simulated crossing's walker read 2.5 m/s
+  // toward the camera, walking across it at 1.4). Later frames' motion enters whole: by then
+  // the filter knows the velocity along the ray from the centres, and leaving that component
+  // out of a cut walker's every frame was worse (docs/tracking.md "Session 17").
+  const bool cut = instanceCutSide(instance, input.instances.labels.cols) != 0;
+  if (!t.stationary && t.ranged_scale_sigma <= 0.0 && (!cut || config_.first_motion_cut_across_ray))
     if (const auto first = firstFrameMotion(
             {instance, input.instances.labels, input.flow_half, input.depth_m, input.T_world_camera,
              input.stamp_s, input.camera, previous_, sample_step_px_, config_.depth_band_m},
             motionOptions(input.frame_index, t.id))) {
-      t.filter.updateVelocity(first->v_world_mps);
+      if (cut)
+        t.filter.updateVelocityAcross(first->v_world_mps,
+                                      t.filter.position() - input.T_world_camera.translation());
+      else
+        t.filter.updateVelocity(first->v_world_mps);
       t.motion = first->H_world;
       t.inliers = first->inliers;
     }

@@ -195,3 +195,24 @@ TEST(KalmanCv, UnknownComponentOfAPositionMeasurementIsNotFollowed) {
   EXPECT_NEAR(filter.position().y(), isotropic.position().y(), 1e-9);
   EXPECT_LT((filter.covariance() - filter.covariance().transpose()).norm(), 1e-9);
 }
+
+TEST(KalmanCv, AVelocityMeasuredAcrossTheRayLeavesTheComponentAlongItAlone) {
+  // A new filter (velocity 0 +- 1 m/s per axis) hears 1 m/s across the line of sight (x) and
+  // 2.5 m/s toward the camera along it (-z): the across component follows the measurement as a
+  // whole measurement's would (1 / (1 + 0.36)), the one along the ray stays at the prior.
+  const KalmanCvNoise noise{0.5, 0.05, 0.6, 1.0};
+  KalmanCv across(Vec3(0, 0, 3), noise);
+  KalmanCv whole(Vec3(0, 0, 3), noise);
+  const Vec3 v(1.0, 0.0, -2.5);
+  const Vec3 ray(0, 0, 3);  // camera at the origin, object 3 m ahead
+  across.updateVelocityAcross(v, ray);
+  whole.updateVelocity(v);
+  EXPECT_NEAR(across.velocity().x(), 1.0 / 1.36, 1e-9);
+  EXPECT_NEAR(across.velocity().x(), whole.velocity().x(), 1e-9);
+  EXPECT_NEAR(across.velocity().z(), 0.0, 1e-9);
+  EXPECT_LT(whole.velocity().z(), -1.5);
+  // Its variance along the ray is still the prior's; across it, narrowed.
+  EXPECT_NEAR(across.covariance()(5, 5), 1.0, 1e-9);
+  EXPECT_NEAR(across.covariance()(3, 3), 0.36 / 1.36, 1e-9);
+  EXPECT_LT((across.covariance() - across.covariance().transpose()).norm(), 1e-12);
+}

@@ -564,3 +564,37 @@ TEST(ObjectTracker, ANewTrackReadsItsSpeedInItsFirstFrame) {
     }
   }
 }
+
+TEST(ObjectTracker, ANewTrackCutByTheImageSideReadsOnlyItsVelocityAcrossTheRayAtFirst) {
+  // A person slides in from the image's left side and is first segmented while still cut by it.
+  // Its first-frame motion enters only across the line of sight (a sliver's motion along it is
+  // biased toward the camera): the filter's velocity along the ray stays at the prior's zero and
+  // across it the slide is read. With the key off such a track gets no first-frame motion.
+  constexpr float kScale = 2.5f;
+  const double expected = kScale * kSlideSpeedMps;
+  for (const bool across : {false, true}) {
+    ObjectTrackingConfig config;
+    config.first_motion_cut_across_ray = across;
+    ObjectTracker tracker(config, 5);
+    float x = -50.f;
+    for (int i = 0; i <= 6; ++i) {
+      const bool seen = i == 6;
+      SynthFrame f = frame({x}, {seen}, i > 0);
+      if (seen) f.instances.items[0].class_name = "person";
+      if (i > 0) f.flow_half *= kScale;
+      const auto out = step(tracker, f, i);
+      if (seen) {
+        ASSERT_EQ(out.size(), 1u);
+        ASSERT_EQ(instanceCutSide(f.instances.items[0], kW), -1) << "cut by the left side";
+        const Vec3 ray = out[0].p_world.normalized();  // the camera is at the origin
+        if (across) {
+          EXPECT_NEAR(out[0].v_world_mps.dot(ray), 0.0, 1e-6) << "not measured along the ray";
+          EXPECT_GT(out[0].v_world_mps.x(), 0.4 * expected) << "read across it";
+        } else {
+          EXPECT_LT(out[0].speed_mps, 1e-6) << "the prior's zero";
+        }
+      }
+      x += kScale * kPixelsPerFrame;
+    }
+  }
+}

@@ -13,6 +13,7 @@ struct ObjectTrackingConfig {
   int max_missed_frames = 15;
   bool gate_missed = true;
   bool first_frame_motion = true;
+  bool first_motion_cut_across_ray = true;
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   double match_min_score = 0.3;
@@ -51,6 +52,10 @@ struct ObjectTrackingConfig {
     v("first_frame_motion", first_frame_motion,
       "a new moving track's velocity is measured in its first frame, from the previous frame's "
       "points the flow carries onto its mask (else it starts at its prior, 0 +- 1 m/s)");
+    v("first_motion_cut_across_ray", first_motion_cut_across_ray,
+      "a new track cut by the image's left or right side takes from its first-frame motion only "
+      "the velocity across the line of sight (along it a sliver's motion is biased toward the "
+      "camera); off: such a track gets no first-frame motion");
     v("centre_min_points", centre_min_points,
       "fewest points with depth that place an object's centre (fewer: no centre this frame)",
       Range{1, 100000});
