@@ -338,8 +338,19 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // carried by a flow that a walker in front drags along: no evidence either (Bonn: 38 of the
   // 121 chair frames still reported moving, docs/tracking.md "Session 13").
   const bool unmoved_object = !track.prior_dynamic && (!fast || !instance);
+  // The dynamics stage's "verified static" is the scene flow of the points sampled in the mask a
+  // few frames back; a mask grown over a static occluder or the background reads their flow
+  // (simulated office, masks grown 5 px: a walker coming into view, partly hidden, was held
+  // still in 3 of 5 frames while its points read 0.8-1.0 m/s). It does not hold a person whose own
+  // points have clearly moved for as many frames in a row as it takes to set off and, this frame,
+  // go on nearer the track's velocity than a standstill. A person who stops is still held at once:
+  // the frame of the stop already reads slower than half the walk (office, grown masks: 0.32
+  // against 0.69 m/s).
+  const bool goes_on =
+      v_measured && (*v_measured - track.filter.velocity()).norm() < v_measured->norm();
+  const bool held_by_verdict = verified_static && !(sets_off && goes_on);
   const bool was_held = track.stationary;
-  track.stationary = verified_static || (!sets_off && track.still >= config_.static_after_frames &&
+  track.stationary = held_by_verdict || (!sets_off && track.still >= config_.static_after_frames &&
                                          (slow || long_unmoved || unmoved_object));
   // A person released from being held still: the held state was an assumption, not a
   // measurement. Its velocity (clamped at zero with a tight covariance) would otherwise ramp up
