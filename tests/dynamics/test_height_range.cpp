@@ -214,6 +214,52 @@ TEST(ObjectTracker, DepthTakesOverFromTheHeightRangeWithoutAVelocityJump) {
   EXPECT_LT(worst_speed_error_after, 0.4);
 }
 
+TEST(ObjectTracker, RangesThatReadNoWalkersSpeedAreDroppedWhenDepthTakesOver) {
+  // A walker approaching at 1.0 m/s from 5.8 m whose mask loses its top rows the farther it is
+  // (80 px per metre beyond 4.5 m: the simulated approach's eroded masks lost head and shoulders
+  // far away), so its height ranges read it far and closing at more than 4 m/s; depth reaches it
+  // at 4.5 m. A range-rate far beyond a walker's speed
+  // is the ranges' error: when depth places the person, the track starts afresh there instead of
+  // carrying a rush at the wearer into its depth frames.
+  const PinholeCamera c = camera();
+  const cv::Mat no_flow;
+  const double speed_mps = 1.0, z0_m = 5.8, depth_range_m = 4.5;
+  for (const bool rows_lost : {false, true}) {
+    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    double ranged_speed = 0.0, first_depth_error = -1.0;
+    for (int i = 0; i < 90; ++i) {
+      const double z_m = z0_m - speed_mps * i / 30.0;
+      const Vec3 soles(0.2, 1.5, z_m), crown(0.2, 1.5 - 1.70, z_m);
+      const int lost =
+          rows_lost ? int(std::lround(std::max(0.0, 80.0 * (z_m - depth_range_m)))) : 0;
+      const int top = int(std::lround(c.project(crown).y() + 0.5)) + lost;
+      const int bottom = int(std::lround(c.project(soles).y() - 0.5));
+      const int half_width = int(std::lround(0.2 * c.fx / z_m));
+      const int centre = int(std::lround(c.project(soles).x()));
+      const Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+      cv::Mat depth(kH, kW, CV_32F, cv::Scalar(0.f));
+      const bool in_depth = z_m - 0.15 < depth_range_m;
+      if (in_depth) depth.setTo(float(z_m - 0.15), instances.labels == 1);
+      FrameDynamics dynamics;
+      dynamics.moving_ids.push_back(1);
+      const auto out = tracker.track(
+          {i, i / 30.0, instances, dynamics, no_flow, depth, SE3::Identity(), true, c});
+      ASSERT_EQ(out.size(), 1u) << "frame " << i;
+      if (!in_depth) {
+        ranged_speed = out[0].speed_mps;
+      } else if (first_depth_error < 0.0) {
+        first_depth_error = std::abs(out[0].speed_mps - speed_mps);
+      }
+    }
+    ASSERT_GE(first_depth_error, 0.0);
+    if (rows_lost) {
+      EXPECT_GT(ranged_speed, 4.0) << "the ranges read a rush (the case under test)";
+    }
+    // The first depth frame: the speed is the walker's or the prior's zero, never the rush.
+    EXPECT_LE(first_depth_error, speed_mps + 1e-6) << (rows_lost ? "rows lost" : "whole");
+  }
+}
+
 TEST(ObjectTracker, APersonBeyondTheDepthRangeCutByTheImageGetsNoRange) {
   // Feet below the image's bottom edge, no depth: nothing places it (no track starts).
   ObjectTracker tracker(ObjectTrackingConfig{}, 5);
