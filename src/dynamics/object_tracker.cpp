@@ -262,18 +262,14 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.filter.addCovariance(Q);
       track.ranged_scale_sigma = 0.0;
       // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
-      // feet: eroded 5 px, one read 35 m at 11 m), or their velocity is not a walker's (outside
-      // a new track's prior, 0 +- 1 m/s, at 99.9 %: eroded masks' ends, lost faster as the person
-      // nears, read an approach at 4.6 m/s for 1.0, which one depth centre cannot undo and the
-      // wearer would hear as a person rushing at them): then the filter starts afresh at the depth.
+      // feet: eroded 5 px, one read 35 m at 11 m): then the filter starts afresh at the depth.
+      // (Ranges whose rate no walker has were withdrawn while they came: below.)
       const Mat3 S = track.filter.covariance().topLeftCorner<3, 3>() +
                      cov_world.value_or(Mat3::Identity() * config_.position_sigma_m *
                                         config_.position_sigma_m);
       const Vec3 innovation = p_world - track.filter.position();
-      const bool no_walkers_speed =
-          track.filter.velocity().squaredNorm() >
-          kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
-      if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999 || no_walkers_speed) {
+      track.ranges_refuted = false;  // placed by depth: its next ranges are judged afresh
+      if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
         track.filter = KalmanCv(p_world, filterNoise(), cov_world);
         restarted = true;
       }
@@ -292,6 +288,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
   const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
   const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
+  if (ranged_centre && beyondWalkersSpeed(track.filter.velocity())) {
+    // The ranges rush (or recede) faster than a walker can: the mask's height changes for
+    // another reason (a far eroded mask gaining head and feet as the person nears read 36 -> 24 m
+    // in 2 s for a walker at 9 m, 1 m/s, and raised an urgent warning). What they said is
+    // withdrawn: the velocity back to a new track's prior (the position keeps its covariance, and
+    // the stature's common error stays beside it), and no more ranges until depth places the
+    // person, where the hand-over above judges the position.
+    track.ranges_refuted = true;
+    const Mat3 position_cov = track.filter.covariance().topLeftCorner<3, 3>();
+    track.filter = KalmanCv(track.filter.position(), filterNoise(), position_cov);
+  }
   if (ranged_centre) {
     // Placed by its height, without depth: the dynamics stage has nothing to find it moving by,
     // so its "not moving" says nothing (a walker 10 m down a hall was held still until depth
@@ -389,6 +396,11 @@ ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) c
 KalmanCvNoise ObjectTracker::filterNoise() const {
   return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
           kInitialVelocitySigmaMps};
+}
+
+bool ObjectTracker::beyondWalkersSpeed(const Vec3& v_world_mps) {
+  return v_world_mps.squaredNorm() >
+         kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
 }
 
 bool ObjectTracker::filterVelocityKnown(const Track& track) const {

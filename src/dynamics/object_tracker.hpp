@@ -73,6 +73,10 @@ class ObjectTracker {
     // (it would have averaged it as if new in every frame); reported beside the filter's
     // covariance and handed to the filter when depth first places the person.
     double ranged_scale_sigma = 0.0;
+    // Its height ranges read a range-rate no walker has (beyond a new track's velocity prior at
+    // 99.9 %): the mask's height is not the person's (a far mask losing head and feet to
+    // erosion), so no more ranges for it until depth places it.
+    bool ranges_refuted = false;
     double last_stamp_s = 0.0;
   };
   struct Carried {  // one track's points carried into this frame
@@ -91,6 +95,8 @@ class ObjectTracker {
   [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;
   /// The configured noise of a track's filter (a new track, or one restarted at a centre).
   [[nodiscard]] KalmanCvNoise filterNoise() const;
+  /// A velocity no walker has: outside a new track's prior (0 +- 1 m/s per axis) at 99.9 %.
+  [[nodiscard]] static bool beyondWalkersSpeed(const Vec3& v_world_mps);
   struct Centre {
     Vec3 p_camera;
     std::optional<Mat3> cov_world;  ///< measurement noise (m^2); none: the configured one

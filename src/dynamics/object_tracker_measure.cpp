@@ -50,7 +50,7 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
   // view: its pixel height and a stature prior give the range (height_range.hpp) until depth
   // covers the mask.
   const bool little_depth = instance && track.depth_share < config_.min_depth_share;
-  if (little_depth && track.class_name == "person")
+  if (little_depth && track.class_name == "person" && !track.ranges_refuted)
     if (const auto extent = personExtent(input.instances.labels, *instance)) {
       const Mat3 R_world_camera = input.T_world_camera.linear();
       // Up: the first camera's (the world frame's) -y, seen from this camera.
