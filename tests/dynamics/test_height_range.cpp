@@ -41,6 +41,18 @@ Instances personMask(int left, int width_px, int top, int bottom) {
   return instances;
 }
 
+/// The mask of a body 0.4 m wide standing between `top` and `bottom` (camera frame, level camera:
+/// the same x and z), from the row `top` projects to (plus `inset_px`, plus `lost_top_px` rows a
+/// segmenter lost) down to the row `bottom` projects to (minus `inset_px`).
+Instances bodyMask(const Vec3& top, const Vec3& bottom, const PinholeCamera& c, double inset_px,
+                   int lost_top_px = 0) {
+  const int top_row = int(std::lround(c.project(top).y() + inset_px)) + lost_top_px;
+  const int bottom_row = int(std::lround(c.project(bottom).y() - inset_px));
+  const int half_width = int(std::lround(0.2 * c.fx / bottom.z()));
+  const int centre = int(std::lround(c.project(bottom).x()));
+  return personMask(centre - half_width, 2 * half_width + 1, top_row, bottom_row);
+}
+
 /// One frame of a walker whose mask is `instances` (id 1, found moving), its front `z_m - 0.15`
 /// m away: depth on the mask when that is nearer than `depth_range_m`, none elsewhere.
 std::vector<TrackedObject> stepWalker(ObjectTracker& tracker, int i, const Instances& instances,
@@ -151,11 +163,7 @@ TEST(ObjectTracker, APersonBeyondTheDepthRangeIsRangedByItsHeight) {
     z_m = z0_m - speed_mps * i / 30.0;
     const Vec3 soles(0.3, 1.5, z_m), crown(0.3, 1.5 - 1.70, z_m);
     torso = crown + kTorsoCentreBelowTop * (soles - crown);
-    const int top = int(std::lround(c.project(crown).y() + 0.5));
-    const int bottom = int(std::lround(c.project(soles).y() - 0.5));
-    const int half_width = int(std::lround(0.2 * c.fx / z_m));
-    const int centre = int(std::lround(c.project(soles).x()));
-    Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+    Instances instances = bodyMask(crown, soles, c, 0.5);
     // The segmenter misses it in frame 30: carried (its depthless sample pixels vote for it when
     // it is seen again), it keeps its id.
     if (i == 30) instances = Instances::none(cv::Size(kW, kH));
@@ -194,11 +202,7 @@ TEST(ObjectTracker, DepthTakesOverFromTheHeightRangeWithoutAVelocityJump) {
     const double z_m = z0_m - speed_mps * i / 30.0;
     const Vec3 soles(-0.4, 1.5, z_m), crown(-0.4, 1.5 - stature_m, z_m);
     const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
-    const int top = int(std::lround(c.project(crown).y() + 0.5));
-    const int bottom = int(std::lround(c.project(soles).y() - 0.5));
-    const int half_width = int(std::lround(0.2 * c.fx / z_m));
-    const int centre = int(std::lround(c.project(soles).x()));
-    const Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+    const Instances instances = bodyMask(crown, soles, c, 0.5);
     const auto out = stepWalker(tracker, i, instances, z_m, depth_range_m, c);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     EXPECT_EQ(out[0].id, 1u);
@@ -239,11 +243,7 @@ TEST(ObjectTracker, RangesThatReadNoWalkersSpeedAreWithdrawn) {
       const Vec3 soles(0.2, 1.5, z_m), crown(0.2, 1.5 - 1.70, z_m);
       const int lost =
           rows_lost ? int(std::lround(std::max(0.0, 80.0 * (z_m - depth_range_m)))) : 0;
-      const int top = int(std::lround(c.project(crown).y() + 0.5)) + lost;
-      const int bottom = int(std::lround(c.project(soles).y() - 0.5));
-      const int half_width = int(std::lround(0.2 * c.fx / z_m));
-      const int centre = int(std::lround(c.project(soles).x()));
-      const Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+      const Instances instances = bodyMask(crown, soles, c, 0.5, lost);
       const bool in_depth = z_m - 0.15 < depth_range_m;
       const auto out = stepWalker(tracker, i, instances, z_m, depth_range_m, c);
       ASSERT_EQ(out.size(), 1u) << "frame " << i;
@@ -335,11 +335,7 @@ TEST(ObjectTracker, DepthThatContradictsTheHeightRangeRestartsTheFilter) {
   for (int i = 0; i < 110; ++i) {
     const double z_m = z0_m - speed_mps * i / 30.0;
     const Vec3 shoulders(0.2, -0.1, z_m), hips(0.2, 0.5, z_m);
-    const int top = int(std::lround(c.project(shoulders).y()));
-    const int bottom = int(std::lround(c.project(hips).y()));
-    const int half_width = int(std::lround(0.2 * c.fx / z_m));
-    const int centre = int(std::lround(c.project(hips).x()));
-    const Instances instances = personMask(centre - half_width, 2 * half_width + 1, top, bottom);
+    const Instances instances = bodyMask(shoulders, hips, c, 0.0);
     const bool in_range = z_m - 0.15 < depth_range_m;
     const auto out = stepWalker(tracker, i, instances, z_m, depth_range_m, c);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
