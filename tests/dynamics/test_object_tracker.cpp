@@ -567,6 +567,31 @@ TEST(ObjectTracker, AMissedPersonWhoseCarriedPointsJumpCoastsOnItsPrediction) {
   }
 }
 
+namespace {
+
+/// A person whose left edge starts at x0 and slides right `scale` times as fast as the other
+/// synthetic objects, in view (depth, flow) but missed by the segmenter until frame
+/// `first_seen`: the tracker's output in that frame and the instance it saw.
+struct FirstSeen {
+  std::vector<TrackedObject> out;
+  Instance instance;
+};
+FirstSeen slideUntilSeen(ObjectTracker& tracker, float x0, int first_seen, float scale) {
+  float x = x0;
+  for (int i = 0;; ++i) {
+    const bool seen = i == first_seen;
+    SynthFrame f = frame({x}, {seen}, i > 0);
+    if (seen) f.instances.items[0].class_name = "person";
+    if (i > 0) f.flow_half *= scale;
+    auto out = step(tracker, f, i);
+    if (seen) return {std::move(out), f.instances.items[0]};
+    EXPECT_TRUE(out.empty()) << "frame " << i;
+    x += scale * kPixelsPerFrame;
+  }
+}
+
+}  // namespace
+
 TEST(ObjectTracker, ANewTrackReadsItsSpeedInItsFirstFrame) {
   // A person walks in view for 10 frames before the segmenter first finds them (a late
   // detection, a mask dropped as noisy): in that first frame the track's velocity is measured
@@ -578,24 +603,12 @@ TEST(ObjectTracker, ANewTrackReadsItsSpeedInItsFirstFrame) {
     ObjectTrackingConfig config;
     config.first_frame_motion = first_frame_motion;
     ObjectTracker tracker(config, 5);
-    float x = 100.f;
-    for (int i = 0; i <= 10; ++i) {
-      const bool seen = i == 10;
-      SynthFrame f = frame({x}, {seen}, i > 0);
-      if (seen) f.instances.items[0].class_name = "person";
-      if (i > 0) f.flow_half *= kScale;
-      const auto out = step(tracker, f, i);
-      if (!seen) {
-        ASSERT_TRUE(out.empty()) << "frame " << i;
-      } else {
-        ASSERT_EQ(out.size(), 1u);
-        if (first_frame_motion) {
-          EXPECT_GT(out[0].speed_mps, 0.6 * expected) << "measured in the first frame";
-        } else {
-          EXPECT_LT(out[0].speed_mps, 0.05) << "the prior's zero";
-        }
-      }
-      x += kScale * kPixelsPerFrame;
+    const FirstSeen first = slideUntilSeen(tracker, 100.f, 10, kScale);
+    ASSERT_EQ(first.out.size(), 1u);
+    if (first_frame_motion) {
+      EXPECT_GT(first.out[0].speed_mps, 0.6 * expected) << "measured in the first frame";
+    } else {
+      EXPECT_LT(first.out[0].speed_mps, 0.05) << "the prior's zero";
     }
   }
 }
@@ -611,25 +624,16 @@ TEST(ObjectTracker, ANewTrackCutByTheImageSideReadsOnlyItsVelocityAcrossTheRayAt
     ObjectTrackingConfig config;
     config.first_motion_cut_across_ray = across;
     ObjectTracker tracker(config, 5);
-    float x = -50.f;
-    for (int i = 0; i <= 6; ++i) {
-      const bool seen = i == 6;
-      SynthFrame f = frame({x}, {seen}, i > 0);
-      if (seen) f.instances.items[0].class_name = "person";
-      if (i > 0) f.flow_half *= kScale;
-      const auto out = step(tracker, f, i);
-      if (seen) {
-        ASSERT_EQ(out.size(), 1u);
-        ASSERT_EQ(instanceCutSide(f.instances.items[0], kW), -1) << "cut by the left side";
-        const Vec3 ray = out[0].p_world.normalized();  // the camera is at the origin
-        if (across) {
-          EXPECT_NEAR(out[0].v_world_mps.dot(ray), 0.0, 1e-6) << "not measured along the ray";
-          EXPECT_GT(out[0].v_world_mps.x(), 0.4 * expected) << "read across it";
-        } else {
-          EXPECT_LT(out[0].speed_mps, 1e-6) << "the prior's zero";
-        }
-      }
-      x += kScale * kPixelsPerFrame;
+    const FirstSeen first = slideUntilSeen(tracker, -50.f, 6, kScale);
+    ASSERT_EQ(first.out.size(), 1u);
+    ASSERT_EQ(instanceCutSide(first.instance, kW), -1) << "cut by the left side";
+    const TrackedObject& o = first.out[0];
+    const Vec3 ray = o.p_world.normalized();  // the camera is at the origin
+    if (across) {
+      EXPECT_NEAR(o.v_world_mps.dot(ray), 0.0, 1e-6) << "not measured along the ray";
+      EXPECT_GT(o.v_world_mps.x(), 0.4 * expected) << "read across it";
+    } else {
+      EXPECT_LT(o.speed_mps, 1e-6) << "the prior's zero";
     }
   }
 }
