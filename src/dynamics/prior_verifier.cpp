@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dynamics/keypoint_dynamics.hpp"
+#include "dynamics/object_points.hpp"
 #include "dynamics/scene_flow.hpp"
 
 namespace dynanav {
@@ -36,6 +37,11 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
       std::vector<Vec3> p_old, p_cur;
       liftFlowCorrespondences(pixels, flow, old.depth_m, input.depth_m, input.camera, p_old, p_cur);
       const bool prior = isPriorDynamic(instance, config_);
+      // A person's mask grown over a static occluder or the wall beside them reads those points'
+      // flow, and their standstill outvotes the body (simulated office, masks grown 5 px: a
+      // walker coming into view partly hidden was verified static while its points moved 0.8-1.0
+      // m/s). A body is shallow: points far from the sampled median depth are not the person's.
+      if (prior && config_.scene_flow_prior_depth_band_m > 0) keepWithinDepthBand(p_old, p_cur);
       // An object that does not move by itself (a chair) moves only relative to the static
       // background around it: most of Bonn crowd's chairs found moving had surroundings whose
       // dense flow was off as much as theirs (docs/dynamics.md "Session 13"). The surroundings
@@ -91,6 +97,21 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
     ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
   }
   return out;
+}
+
+void PriorVerifier::keepWithinDepthBand(std::vector<Vec3>& p_old, std::vector<Vec3>& p_cur) const {
+  std::vector<float> z_old_m(p_old.size());
+  for (size_t i = 0; i < p_old.size(); ++i) z_old_m[i] = float(p_old[i].z());
+  const std::vector<uint8_t> keep = withinDepthBand(z_old_m, config_.scene_flow_prior_depth_band_m);
+  size_t kept = 0;
+  for (size_t i = 0; i < p_old.size(); ++i) {
+    if (!keep[i]) continue;
+    p_old[kept] = p_old[i];
+    p_cur[kept] = p_cur[i];
+    ++kept;
+  }
+  p_old.resize(kept);
+  p_cur.resize(kept);
 }
 
 int PriorVerifier::flowFootprintPx() const {

@@ -53,6 +53,9 @@ class PriorVerifier {
     SE3 T_camera_world = SE3::Identity();
     bool tracked = false;
   };
+  /// Keeps the correspondences whose old depth lies within scene_flow_prior_depth_band_m of
+  /// their median (withinDepthBand), in order.
+  void keepWithinDepthBand(std::vector<Vec3>& p_old, std::vector<Vec3>& p_cur) const;
   DynamicsConfig config_;
   std::deque<Snapshot> frames_;  // oldest first, at most scene_flow_gap_frames
   cv::Mat moving_mask_;

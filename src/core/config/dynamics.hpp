@@ -29,6 +29,7 @@ struct DynamicsConfig {
   int scene_flow_gap_frames = 3;
   bool scene_flow_mean_check = true;
   int scene_flow_reference_px = 32;
+  double scene_flow_prior_depth_band_m = 0.5;
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
@@ -118,6 +119,12 @@ struct DynamicsConfig {
       "point must also move scene_flow_point_sigmas of its robust spread (a flow dragged by a "
       "walker in front or blurred moves both; 0 = against the camera's motion alone)",
       Range{0, 1000});
+    v("scene_flow_prior_depth_band_m", scene_flow_prior_depth_band_m,
+      "scene flow of a prior-dynamic object (a person) takes only its sampled points within this "
+      "depth (m) of their median: a mask grown over an occluder or the background in front of "
+      "or behind the body would average their flow into the person's (a body is well under 1 m "
+      "deep; objects outside the classes may be any size and keep every point; 0 = every point)",
+      Range{0, 100});
     v("cull_vanished_points", cull_vanished_points,
       "a map point whose keypoint now measures deeper than predicted (beyond the depth test) is "
       "gone: "
