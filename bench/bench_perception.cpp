@@ -257,10 +257,14 @@ BENCHMARK(BM_Propagation)
 /// The per-frame preparation whose dense flow carries the tracker's object points
 /// (perception/frame_prep.hpp: grey, half-size grey, DIS ultrafast flow), at DIS's finest
 /// pyramid level 2 (the preset's; 8 px patches cover 64 px of the full image) and 1 (32 px),
-/// the `objects.flow_finest_scale` setting. One OpenCV thread: the CPU cost of the choice.
+/// the `objects.flow_finest_scale` setting, without and with 5 variational refinement iterations
+/// (`objects.flow_refinement_iterations`). One OpenCV thread: the CPU cost of the choice.
 void BM_FramePrep(benchmark::State& state) {
   cv::setNumThreads(1);
-  FramePrep prep({.half = true, .flow = true, .flow_finest_scale = int(state.range(0))});
+  FramePrep prep({.half = true,
+                  .flow = true,
+                  .flow_finest_scale = int(state.range(0)),
+                  .flow_refinement_iterations = int(state.range(1))});
   Samples s;
   forEachFrame(state, [&](const RgbdFrame& f) {
     const auto t0 = Clock::now();
@@ -273,9 +277,10 @@ void BM_FramePrep(benchmark::State& state) {
   s.report(state);
 }
 BENCHMARK(BM_FramePrep)
-    ->Arg(2)
-    ->Arg(1)
-    ->ArgName("finest_scale")
+    ->Args({2, 0})
+    ->Args({1, 0})
+    ->Args({1, 5})
+    ->ArgNames({"finest_scale", "refinement_iterations"})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

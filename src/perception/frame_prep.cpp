@@ -25,6 +25,7 @@ PreparedFrame FramePrep::prepare(const RgbdFrame& frame) {
     if (!dis_) {
       dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
       dis_->setFinestScale(needs_.flow_finest_scale);
+      dis_->setVariationalRefinementIterations(needs_.flow_refinement_iterations);
     }
     dis_->calc(previous_half_, out.grey_half, out.flow_half);
   }

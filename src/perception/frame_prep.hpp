@@ -27,6 +27,10 @@ class FramePrep {
     /// DIS's finest pyramid level (the ultrafast preset's is 2): its 8 px patches there cover
     /// 2^(level+1) * 8 px of the full image, and a finer level follows a narrow object better.
     int flow_finest_scale = 2;
+    /// Variational refinement iterations after DIS's patch search (the preset's: 0): a smooth
+    /// field that keeps the image's brightness constant, which fills in the patch search's
+    /// shortfall on low-texture surfaces (smooth clothes) at a cost per pixel.
+    int flow_refinement_iterations = 0;
   };
   explicit FramePrep(Needs needs) : needs_(needs) {}
   PreparedFrame prepare(const RgbdFrame& frame);

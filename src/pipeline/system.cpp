@@ -22,7 +22,8 @@ System::System(const Config& config, const PinholeCamera& camera,
       dynamic_(config.run.dynamic),
       prep_({.half = config.run.dynamic,
              .flow = config.run.dynamic && config.objects.enabled,
-             .flow_finest_scale = config.objects.flow_finest_scale}) {
+             .flow_finest_scale = config.objects.flow_finest_scale,
+             .flow_refinement_iterations = config.objects.flow_refinement_iterations}) {
   if (dynamic_) {
     SegmenterRequest request;
     request.name = config.run.segmenter;

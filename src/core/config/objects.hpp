@@ -16,6 +16,7 @@ struct ObjectTrackingConfig {
   bool first_motion_cut_across_ray = true;
   int centre_min_points = 8;
   int flow_finest_scale = 1;
+  int flow_refinement_iterations = 0;
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
   double centre_behind_surface_m = 0.15;
@@ -63,6 +64,11 @@ struct ObjectTrackingConfig {
       "the tracker's dense flow (DIS on half-size images): finest pyramid level; its 8 px "
       "patches cover 2^(level+1) * 8 px of the full image (2: 64 px, 1: 32 px, more CPU)",
       Range{0, 6});
+    v("flow_refinement_iterations", flow_refinement_iterations,
+      "the tracker's dense flow: DIS's variational refinement iterations at each level (0: the "
+      "ultrafast preset's none; 5: the fast preset's): fills in what the patch search under-reads "
+      "on low-texture surfaces such as smooth clothes, at a cost per pixel",
+      Range{0, 100});
     v("match_min_score", match_min_score,
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id",
       Range{0, 2});
