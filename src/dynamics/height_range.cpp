@@ -130,4 +130,68 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
   return out;
 }
 
+namespace {
+
+/// The torso centre over the soles at row bottom_px on the plane (n, offset); none if the rays
+/// do not meet the floor ahead of the camera or the centre falls below it.
+std::optional<Vec3> torsoOverSoles(const PersonExtent& extent, double bottom_px,
+                                   const PinholeCamera& camera, const Vec3& n, double offset_m) {
+  const auto ray = [&](double v) {
+    return Vec3((extent.column_px - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1.0);
+  };
+  const Vec3 r_soles = ray(bottom_px);
+  const double along = n.dot(r_soles);
+  if (!(offset_m < 0.0) || !(along < 0.0)) return std::nullopt;
+  const Vec3 soles = (offset_m / along) * r_soles;
+  const Vec3 r_torso = ray(extent.top_px + kTorsoCentreBelowTop * (bottom_px - extent.top_px));
+  // c·r_torso = soles + h·n in least squares: the torso on the vertical through the soles.
+  Eigen::Matrix<double, 3, 2> A;
+  A.col(0) = r_torso;
+  A.col(1) = -n;
+  const Eigen::Vector2d ch = A.colPivHouseholderQr().solve(soles);
+  if (!(ch(0) > 0.0) || !(ch(1) > 0.0)) return std::nullopt;
+  return 0.5 * (ch(0) * r_torso + soles + ch(1) * n);
+}
+
+}  // namespace
+
+std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
+                                                 const PinholeCamera& camera,
+                                                 const FloorPlane& floor,
+                                                 const FloorContactOptions& options) {
+  const Vec3 n = floor.normal_camera.normalized();
+  const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m);
+  if (!centre) return std::nullopt;
+  HeightRange out;
+  out.p_camera = *centre;
+  out.range_m = centre->norm();
+  // Relative range errors by finite differences: the soles' row (new each frame) and the
+  // floor's height and tilt toward the camera (persistent: the scale).
+  const auto relativeShift = [&](double bottom_px, const Vec3& normal, double offset_m) {
+    const auto moved = torsoOverSoles(extent, bottom_px, camera, normal.normalized(), offset_m);
+    return moved ? std::abs(moved->norm() - out.range_m) / out.range_m : 1.0;
+  };
+  const double pixels_rel =
+      relativeShift(extent.bottom_px + options.edge_sigma_px, n, floor.offset_m);
+  const double offset_rel =
+      relativeShift(extent.bottom_px, n, floor.offset_m + options.offset_sigma_m);
+  // Tilt toward the camera: the normal turned about the camera's x axis.
+  const double tilt = options.tilt_sigma_deg * M_PI / 180.0;
+  const Vec3 tilted = Eigen::AngleAxisd(tilt, Vec3::UnitX()) * n;
+  const double tilt_rel = relativeShift(extent.bottom_px, tilted, floor.offset_m);
+  // The floor is fitted afresh every frame: its errors are partly new each frame (the fit's
+  // jitter) and partly the same (the sensor's bias); both are counted in both parts.
+  out.scale_sigma = std::hypot(offset_rel, tilt_rel);
+  const double frame_rel = std::hypot(pixels_rel, out.scale_sigma);
+  out.sigma_range_m = out.range_m * std::hypot(out.scale_sigma, frame_rel);
+  const double along_m = out.range_m * frame_rel;
+  const double across_m =
+      std::hypot(options.across_sigma_m, out.range_m * options.edge_sigma_px / camera.fx);
+  const Vec3 dir = out.p_camera / out.range_m;
+  const Mat3 along = dir * dir.transpose();
+  out.cov_frame_camera =
+      along_m * along_m * along + across_m * across_m * (Mat3::Identity() - along);
+  return out;
+}
+
 }  // namespace dynanav

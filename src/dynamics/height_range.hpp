@@ -12,6 +12,7 @@
 
 #include "core/camera.hpp"
 #include "core/se3.hpp"
+#include "dynamics/floor_plane.hpp"
 #include "perception/instances.hpp"
 
 namespace dynanav {
@@ -98,6 +99,33 @@ struct HeightRange {
 std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const PinholeCamera& camera,
                                            const Vec3& up_camera,
                                            const HeightRangeOptions& options = {});
+
+struct FloorContactOptions {
+  /// Standard deviation (px) of the mask's lowest row (the soles), as HeightRangeOptions.
+  double edge_sigma_px = 1.5;
+  /// Standard deviation (m) across the viewing ray, as HeightRangeOptions.
+  double across_sigma_m = 0.05;
+  /// Errors of the fitted floor that persist from frame to frame (the depth sensor's own bias,
+  /// a floor that is not quite flat): its height below the camera and its tilt toward the
+  /// camera. Each moves the soles' range in proportion, like a stature's error: at 11 m the
+  /// soles' ray dips 8° below the horizon, so 0.1° of tilt is 1.2 % of range and 2 cm of
+  /// height 1.2 %. (The simulated approach read +0.7-0.9 % +- 0.8 % over 63-77 frames, a
+  /// scratch comparison, docs/tracking.md "Session 18".)
+  double offset_sigma_m = 0.02;
+  double tilt_sigma_deg = 0.1;
+};
+
+/// The torso centre of a person standing on `floor` whose soles appear at extent.bottom_px in
+/// column extent.column_px: the soles' ray meets the floor; the torso centre lies on the
+/// floor's normal through that point, where it meets the ray through the torso's row (the share
+/// kTorsoCentreBelowTop of the silhouette below its top). No stature is assumed. The floor's
+/// errors (options) scale the solution about the camera centre: scale_sigma; the soles' row
+/// and the body axis are new each frame: cov_frame_camera. None when the soles' ray does not
+/// meet the floor ahead of the camera.
+std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
+                                                 const PinholeCamera& camera,
+                                                 const FloorPlane& floor,
+                                                 const FloorContactOptions& options = {});
 
 /// Covariance (world, [p, v]) that a common scale error of relative sigma `scale_sigma` gives a
 /// track every centre of which came from the height range: a stature off the prior by ε scales

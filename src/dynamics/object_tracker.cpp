@@ -43,6 +43,7 @@ ObjectTracker::ObjectTracker(const ObjectTrackingConfig& config, int sample_step
 
 std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input) {
   const cv::Size size = input.depth_m.size();
+  floor_.reset();
   // 1. Every track's points into this frame along the shared flow.
   std::vector<Carried> carried(tracks_.size());
   for (size_t k = 0; k < tracks_.size(); ++k) {

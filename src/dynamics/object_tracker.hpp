@@ -18,6 +18,7 @@
 #include "core/se3.hpp"
 #include "core/tracked_object.hpp"
 #include "dynamics/first_motion.hpp"
+#include "dynamics/floor_plane.hpp"
 #include "dynamics/frame_dynamics.hpp"
 #include "dynamics/kalman_cv.hpp"
 #include "dynamics/object_points.hpp"
@@ -129,6 +130,10 @@ class ObjectTracker {
   std::vector<Track> tracks_;  // ordered by id
   cv::Mat previous_labels_;
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
+  /// This frame's floor (floor_plane.hpp), fitted when a track first needs it: outer empty =
+  /// not yet fitted this frame, inner empty = no floor found.
+  mutable std::optional<std::optional<FloorPlane>> floor_;
+  mutable FloorAverage floor_average_;  // the floor over the frames that needed it
 };
 
 }  // namespace dynanav

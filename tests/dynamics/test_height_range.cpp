@@ -345,3 +345,33 @@ TEST(ObjectTracker, DepthThatContradictsTheHeightRangeRestartsTheFilter) {
   EXPECT_TRUE(ranged);  // the torso did read far too far
   EXPECT_LT(fastest_after_mps, speed_mps + 0.4);
 }
+
+TEST(ObjectTracker, APersonBeyondTheDepthRangeStandsWhereItsSolesMeetTheFloor) {
+  // A 1.55 m person 9 m ahead of a level camera 1.5 m above the floor: the floor has depth up to
+  // 4.5 m (the image's bottom rows), the person none. Its stature reads it 9 % near; its soles
+  // on the fitted floor place it within a few centimetres.
+  const PinholeCamera c = camera();
+  const double floor_below_m = 1.5, stature_m = 1.55;
+  cv::Mat depth(kH, kW, CV_32F, cv::Scalar(0.f));
+  for (int v = 0; v < kH; ++v) {
+    const double z = floor_below_m * c.fy / (v - c.cy);
+    if (v > c.cy && z <= 4.5) depth.row(v).setTo(float(z));
+  }
+  const Vec3 soles(0.3, floor_below_m, 9.0), crown(0.3, floor_below_m - stature_m, 9.0);
+  const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
+  const Instances instances = bodyMask(crown, soles, c, 0.5);
+  const auto placedAt = [&](bool floor_contact) {
+    ObjectTrackingConfig config;
+    config.floor_contact_range = floor_contact;
+    ObjectTracker tracker(config, 5);
+    std::vector<TrackedObject> out;
+    for (int i = 0; i < 10; ++i) {
+      FrameDynamics dynamics;
+      out = tracker.track(
+          {i, i / 30.0, instances, dynamics, cv::Mat(), depth, SE3::Identity(), true, c});
+    }
+    return out.size() == 1 ? out[0].p_world : Vec3::Zero();
+  };
+  EXPECT_LT((placedAt(true) - torso).norm(), 0.15);
+  EXPECT_GT((placedAt(false) - torso).norm(), 0.6);
+}

@@ -17,6 +17,7 @@ struct ObjectTrackingConfig {
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   int flow_refinement_iterations = 0;
+  bool floor_contact_range = true;
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
   double centre_behind_surface_m = 0.15;
@@ -69,6 +70,11 @@ struct ObjectTrackingConfig {
       "ultrafast preset's none; 5: the fast preset's): fills in what the patch search under-reads "
       "on low-texture surfaces such as smooth clothes, at a cost per pixel",
       Range{0, 100});
+    v("floor_contact_range", floor_contact_range,
+      "a person beyond the depth sensor's range is placed where its soles meet the floor (a "
+      "plane fitted to the depth of the image's lower part each frame) instead of by a stature "
+      "prior, when the two ranges agree within 3 sigma of the stature's (docs/tracking.md "
+      "'Session 18')");
     v("match_min_score", match_min_score,
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id",
       Range{0, 2});
