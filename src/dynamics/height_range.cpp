@@ -14,6 +14,17 @@ bool otherInstance(uint16_t label, uint16_t id) {
   return label != 0 && label != id;
 }
 
+/// A ranged centre's error new in each frame: along_m along its viewing ray; across it
+/// across_sigma_m (the body axis against the torso centre) and a mask edge's worth of pixels.
+Mat3 frameCovariance(const Vec3& p_camera, double along_m, double across_sigma_m,
+                     double edge_sigma_px, const PinholeCamera& camera) {
+  const double range_m = p_camera.norm();
+  const double across_m = std::hypot(across_sigma_m, range_m * edge_sigma_px / camera.fx);
+  const Vec3 n = p_camera / range_m;
+  const Mat3 along = n * n.transpose();
+  return along_m * along_m * along + across_m * across_m * (Mat3::Identity() - along);
+}
+
 }  // namespace
 
 std::optional<PersonExtent> personExtent(const cv::Mat& labels, const Instance& instance,
@@ -120,13 +131,8 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
   const double pixels_rel = std::sqrt(2.0) * options.edge_sigma_px / height_px;
   out.scale_sigma = stature_rel;
   out.sigma_range_m = out.range_m * std::hypot(stature_rel, pixels_rel);
-  const double along_m = out.range_m * pixels_rel;
-  const double across_m =
-      std::hypot(options.across_sigma_m, out.range_m * options.edge_sigma_px / camera.fx);
-  const Vec3 n = out.p_camera / out.range_m;
-  const Mat3 along = n * n.transpose();
-  out.cov_frame_camera =
-      along_m * along_m * along + across_m * across_m * (Mat3::Identity() - along);
+  out.cov_frame_camera = frameCovariance(out.p_camera, out.range_m * pixels_rel,
+                                         options.across_sigma_m, options.edge_sigma_px, camera);
   return out;
 }
 
@@ -184,13 +190,8 @@ std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
   out.scale_sigma = std::hypot(offset_rel, tilt_rel);
   const double frame_rel = std::hypot(pixels_rel, out.scale_sigma);
   out.sigma_range_m = out.range_m * std::hypot(out.scale_sigma, frame_rel);
-  const double along_m = out.range_m * frame_rel;
-  const double across_m =
-      std::hypot(options.across_sigma_m, out.range_m * options.edge_sigma_px / camera.fx);
-  const Vec3 dir = out.p_camera / out.range_m;
-  const Mat3 along = dir * dir.transpose();
-  out.cov_frame_camera =
-      along_m * along_m * along + across_m * across_m * (Mat3::Identity() - along);
+  out.cov_frame_camera = frameCovariance(out.p_camera, out.range_m * frame_rel,
+                                         options.across_sigma_m, options.edge_sigma_px, camera);
   return out;
 }
 
