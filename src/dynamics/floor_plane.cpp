@@ -8,9 +8,9 @@
 
 namespace dynanav {
 
-std::optional<FloorPlane> estimateFloorPlane(const cv::Mat& depth_m, const PinholeCamera& camera,
-                                             const Vec3& up_camera,
-                                             const FloorPlaneOptions& options) {
+std::optional<CameraFloor> estimateFloorPlane(const cv::Mat& depth_m, const PinholeCamera& camera,
+                                              const Vec3& up_camera,
+                                              const CameraFloorOptions& options) {
   if (depth_m.empty() || depth_m.type() != CV_32F || up_camera.norm() < 1e-9 || options.step_px < 1)
     return std::nullopt;
   const Vec3 up = up_camera.normalized();
@@ -54,19 +54,15 @@ std::optional<FloorPlane> estimateFloorPlane(const cv::Mat& depth_m, const Pinho
   const Eigen::SelfAdjointEigenSolver<Mat3> eigen(scatter);
   Vec3 n = eigen.eigenvectors().col(0);
   if (n.dot(up) < 0.0) n = -n;
-  FloorPlane plane;
+  CameraFloor plane;
   plane.normal_camera = n;
   plane.offset_m = n.dot(mean);
-  plane.inliers = int(inliers.size());
-  double sum2 = 0.0;
-  for (const Vec3& p : inliers) sum2 += std::pow(n.dot(p) - plane.offset_m, 2);
-  plane.rms_residual_m = std::sqrt(sum2 / double(inliers.size()));
   if (plane.offset_m >= 0.0) return std::nullopt;
   return plane;
 }
 
-std::optional<FloorPlane> FloorAverage::update(const std::optional<FloorPlane>& fit_camera,
-                                               const SE3& T_world_camera, bool tracked) {
+std::optional<CameraFloor> FloorAverage::update(const std::optional<CameraFloor>& fit_camera,
+                                                const SE3& T_world_camera, bool tracked) {
   const Mat3 R = T_world_camera.linear();
   const Vec3 t = T_world_camera.translation();
   if (fit_camera && tracked) {
@@ -85,11 +81,9 @@ std::optional<FloorPlane> FloorAverage::update(const std::optional<FloorPlane>& 
   }
   if (frames_ == 0) return tracked ? std::nullopt : fit_camera;
   if (!tracked) return fit_camera;  // the pose that would carry the average is not known
-  FloorPlane out;
+  CameraFloor out;
   out.normal_camera = R.transpose() * normal_world_;
   out.offset_m = offset_world_m_ - normal_world_.dot(t);
-  out.inliers = fit_camera ? fit_camera->inliers : 0;
-  out.rms_residual_m = fit_camera ? fit_camera->rms_residual_m : 0.0;
   if (out.offset_m >= 0.0) return std::nullopt;
   return out;
 }

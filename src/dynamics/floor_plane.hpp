@@ -12,16 +12,15 @@
 
 namespace dynanav {
 
-/// A plane n·p = offset_m in the camera frame, n the unit normal pointing up (away from the
+/// (Not mapping/floor_grid.hpp's FloorPlane, the floor of the whole map's cloud in the world
+/// frame.) A plane n·p = offset_m in the camera frame, n the unit normal pointing up (away from the
 /// floor, toward the camera): the camera lies -offset_m above it.
-struct FloorPlane {
+struct CameraFloor {
   Vec3 normal_camera = Vec3(0.0, -1.0, 0.0);
   double offset_m = 0.0;
-  int inliers = 0;              ///< sampled depth points within the inlier band
-  double rms_residual_m = 0.0;  ///< of the inliers to the refitted plane
 };
 
-struct FloorPlaneOptions {
+struct CameraFloorOptions {
   double lower_share = 0.4;       ///< the image's lower part searched (share of its rows)
   int step_px = 8;                ///< one depth sample every step_px in each direction
   int iterations = 150;           ///< RANSAC draws of three points
@@ -35,9 +34,9 @@ struct FloorPlaneOptions {
 /// within max_tilt_deg of `up_camera` (the world's up seen from this camera) and below the
 /// camera; RANSAC, then a least-squares refit to its inliers. None when too few points support
 /// one (the floor out of view or out of the sensor's range).
-std::optional<FloorPlane> estimateFloorPlane(const cv::Mat& depth_m, const PinholeCamera& camera,
-                                             const Vec3& up_camera,
-                                             const FloorPlaneOptions& options = {});
+std::optional<CameraFloor> estimateFloorPlane(const cv::Mat& depth_m, const PinholeCamera& camera,
+                                              const Vec3& up_camera,
+                                              const CameraFloorOptions& options = {});
 
 /// The floor in the world frame, averaged over the frames that fitted one: the floor does not
 /// move while one frame's fit jitters (the simulated approach: 1-2 % of a walker's range at
@@ -47,8 +46,8 @@ class FloorAverage {
  public:
   /// Takes this frame's fit (camera frame; none: nothing to add) when the frame's pose is
   /// tracked, and returns the averaged floor seen from this camera (none before any fit).
-  std::optional<FloorPlane> update(const std::optional<FloorPlane>& fit_camera,
-                                   const SE3& T_world_camera, bool tracked);
+  std::optional<CameraFloor> update(const std::optional<CameraFloor>& fit_camera,
+                                    const SE3& T_world_camera, bool tracked);
 
  private:
   static constexpr int kMemoryFrames = 30;     ///< the average's weight on a new fit: 1/30 at least

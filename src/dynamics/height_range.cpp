@@ -163,7 +163,7 @@ std::optional<Vec3> torsoOverSoles(const PersonExtent& extent, double bottom_px,
 
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const FloorPlane& floor,
+                                                 const CameraFloor& floor,
                                                  const FloorContactOptions& options) {
   const Vec3 n = floor.normal_camera.normalized();
   const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m);

@@ -124,7 +124,7 @@ struct FloorContactOptions {
 /// meet the floor ahead of the camera.
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const FloorPlane& floor,
+                                                 const CameraFloor& floor,
                                                  const FloorContactOptions& options = {});
 
 /// Covariance (world, [p, v]) that a common scale error of relative sigma `scale_sigma` gives a

@@ -132,7 +132,7 @@ class ObjectTracker {
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
   /// This frame's floor (floor_plane.hpp), fitted when a track first needs it: outer empty =
   /// not yet fitted this frame, inner empty = no floor found.
-  mutable std::optional<std::optional<FloorPlane>> floor_;
+  mutable std::optional<std::optional<CameraFloor>> floor_;
   mutable FloorAverage floor_average_;  // the floor over the frames that needed it
 };
 

@@ -20,9 +20,9 @@ PinholeCamera camera() {
 
 /// The floor kCameraHeightM below a camera pitched down kPitchDeg: its upward normal in the
 /// camera frame (y down, z ahead) and offset (n . p = offset).
-FloorPlane trueFloor() {
+CameraFloor trueFloor() {
   const double pitch = kPitchDeg * M_PI / 180.0;
-  FloorPlane floor;
+  CameraFloor floor;
   // Level camera: up = -y. Pitched down by a (about x): the world's up leans toward -z.
   floor.normal_camera = Vec3(0.0, -std::cos(pitch), -std::sin(pitch));
   floor.offset_m = -kCameraHeightM;
@@ -32,7 +32,7 @@ FloorPlane trueFloor() {
 /// Depth of that floor wherever a pixel's ray meets it within `max_range_m`, and a wall 3 m
 /// ahead filling the columns from `wall_from_col` on (0 elsewhere: out of range).
 cv::Mat floorDepth(const PinholeCamera& c, double max_range_m, int wall_from_col = 10000) {
-  const FloorPlane floor = trueFloor();
+  const CameraFloor floor = trueFloor();
   cv::Mat depth(c.height, c.width, CV_32F, cv::Scalar(0.f));
   for (int v = 0; v < c.height; ++v)
     for (int u = 0; u < c.width; ++u) {
@@ -55,7 +55,7 @@ double angleDeg(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-TEST(FloorPlane, FindsATiltedFloorBelowTheCamera) {
+TEST(CameraFloor, FindsATiltedFloorBelowTheCamera) {
   const PinholeCamera c = camera();
   // A wall fills the right third: the floor still holds most of the lower image.
   const auto floor = estimateFloorPlane(floorDepth(c, 4.5, 430), c, Vec3(0.0, -1.0, 0.0));
@@ -64,19 +64,19 @@ TEST(FloorPlane, FindsATiltedFloorBelowTheCamera) {
   EXPECT_NEAR(floor->offset_m, -kCameraHeightM, 0.005);
 }
 
-TEST(FloorPlane, NoneWhenOnlyAWallIsInView) {
+TEST(CameraFloor, NoneWhenOnlyAWallIsInView) {
   const PinholeCamera c = camera();
   EXPECT_FALSE(estimateFloorPlane(floorDepth(c, 4.5, 0), c, Vec3(0.0, -1.0, 0.0)));
   EXPECT_FALSE(estimateFloorPlane(cv::Mat(c.height, c.width, CV_32F, cv::Scalar(0.f)), c,
                                   Vec3(0.0, -1.0, 0.0)));
 }
 
-TEST(FloorPlane, TheAverageLeavesOutAFitFarFromTheFloor) {
+TEST(CameraFloor, TheAverageLeavesOutAFitFarFromTheFloor) {
   // Ten frames of the floor, then a table top 0.9 m higher: the average stays on the floor.
   FloorAverage average;
   const SE3 pose = SE3::Identity();
   for (int i = 0; i < 10; ++i) ASSERT_TRUE(average.update(trueFloor(), pose, true));
-  FloorPlane table = trueFloor();
+  CameraFloor table = trueFloor();
   table.offset_m += 0.9;
   const auto seen = average.update(table, pose, true);
   ASSERT_TRUE(seen);
@@ -89,11 +89,11 @@ TEST(FloorPlane, TheAverageLeavesOutAFitFarFromTheFloor) {
   EXPECT_NEAR(from_raised->offset_m, -kCameraHeightM - 0.1, 1e-6);
 }
 
-TEST(FloorPlane, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
+TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   // A 1.55 m walker 10 m ahead on the floor of a camera pitched down 5 degrees: the stature
   // prior (1.70 m) reads it ~9 % near; its soles on the floor read it exactly.
   const PinholeCamera c = camera();
-  const FloorPlane floor = trueFloor();
+  const CameraFloor floor = trueFloor();
   const Vec3 up = floor.normal_camera;
   const double stature_m = 1.55;
   const Vec3 ahead = Vec3(0.0, 0.0, 1.0) - up * up.z();  // level direction ahead of the camera

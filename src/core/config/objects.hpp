@@ -72,7 +72,8 @@ struct ObjectTrackingConfig {
       Range{0, 100});
     v("floor_contact_range", floor_contact_range,
       "a person beyond the depth sensor's range is placed where its soles meet the floor (a "
-      "plane fitted to the depth of the image's lower part each frame) instead of by a stature "
+      "plane fitted to the depth of the image's lower part, averaged in the world frame) instead "
+      "of by a stature "
       "prior, when the two ranges agree within 3 sigma of the stature's (docs/tracking.md "
       "'Session 18')");
     v("match_min_score", match_min_score,
