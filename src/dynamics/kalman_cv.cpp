@@ -104,6 +104,15 @@ void KalmanCv::updateVelocityAcross(const Vec3& v_world_mps, const Vec3& ray_wor
   correct(innovation(std::move(H), z, Eigen::MatrixXd::Identity(2, 2) * r));
 }
 
+void KalmanCv::updateVelocityAlong(const Vec3& axis_world, double v_mps, double sigma_mps) {
+  if (!(sigma_mps > 0.0) || axis_world.norm() < 1e-9) return;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(1, 6);
+  H.block<1, 3>(0, 3) = axis_world.normalized().transpose();
+  Eigen::VectorXd z(1);
+  z(0) = v_mps;
+  correct(innovation(std::move(H), z, Eigen::MatrixXd::Constant(1, 1, sigma_mps * sigma_mps)));
+}
+
 double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
                                       const std::optional<Mat3>& position_cov_world) const {
   const Innovation in = centreInnovation(p_world, v_world_mps, position_cov_world);

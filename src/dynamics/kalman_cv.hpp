@@ -41,6 +41,9 @@ class KalmanCv {
   /// The same for the two components of the velocity across `ray_world` (the line of sight):
   /// the component along it is not measured (a sliver's motion, biased along the ray).
   void updateVelocityAcross(const Vec3& v_world_mps, const Vec3& ray_world);
+  /// One component of the velocity, along the unit `axis_world`, measured as v_mps +- sigma_mps
+  /// (a pseudo-measurement of what is known without looking: a walker's vertical velocity).
+  void updateVelocityAlong(const Vec3& axis_world, double v_mps, double sigma_mps);
   /// The squared Mahalanobis distance of that measurement from the prediction (its normalised
   /// innovation, chi-square with 3 or 6 degrees of freedom when the filter is consistent):
   /// how far outside what the covariance allows a measurement lies, before it is used.

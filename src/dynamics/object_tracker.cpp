@@ -43,7 +43,16 @@ ObjectTracker::ObjectTracker(const ObjectTrackingConfig& config, int sample_step
 
 std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input) {
   const cv::Size size = input.depth_m.size();
+  // The floor, once per frame with anything to track: far walkers stand on it (the soles'
+  // range), and what is tracked moves along it (the vertical velocity).
   floor_.reset();
+  const bool floor_needed = config_.floor_contact_range || config_.vertical_speed_sigma_mps > 0.0;
+  if (floor_needed && input.tracked && (!tracks_.empty() || !input.instances.items.empty())) {
+    // Expected up: the first camera's (the world frame's) -y, seen from this camera.
+    const Vec3 up_camera = input.T_world_camera.linear().transpose() * Vec3(0.0, -1.0, 0.0);
+    floor_ = floor_average_.update(estimateFloorPlane(input.depth_m, input.camera, up_camera),
+                                   input.T_world_camera, input.tracked);
+  }
   // 1. Every track's points into this frame along the shared flow.
   std::vector<Carried> carried(tracks_.size());
   for (size_t k = 0; k < tracks_.size(); ++k) {
@@ -287,6 +296,14 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   } else {
     track.whole_centre_frames = 0;
   }
+  // People and what they push move along the floor: the centre's vertical jitter (a gait's bob,
+  // the trunk's sampled part changing, a ranged centre's noise) is not their motion (the
+  // simulated crossing and office: 0.12-0.21 m/s of vertical velocity error, docs/tracking.md
+  // "Session 19"). Told every frame, so the filter keeps it near zero while a stair climber's
+  // rise would still come through.
+  if (floor_ && config_.vertical_speed_sigma_mps > 0.0)
+    track.filter.updateVelocityAlong(input.T_world_camera.linear() * floor_->normal_camera, 0.0,
+                                     config_.vertical_speed_sigma_mps);
   const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
   const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
   if (ranged_centre && beyondWalkersSpeed(track.filter.velocity())) {

@@ -130,10 +130,10 @@ class ObjectTracker {
   std::vector<Track> tracks_;  // ordered by id
   cv::Mat previous_labels_;
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
-  /// This frame's floor (floor_plane.hpp), fitted when a track first needs it: outer empty =
-  /// not yet fitted this frame, inner empty = no floor found.
-  mutable std::optional<std::optional<CameraFloor>> floor_;
-  mutable FloorAverage floor_average_;  // the floor over the frames that needed it
+  /// This frame's floor seen from the camera (floor_plane.hpp: this frame's fit averaged over
+  /// the frames before), fitted once per frame with anything to track; none: no floor found.
+  std::optional<CameraFloor> floor_;
+  FloorAverage floor_average_;
 };
 
 }  // namespace dynanav

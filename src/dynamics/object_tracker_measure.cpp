@@ -56,20 +56,15 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
       // Up: the first camera's (the world frame's) -y, seen from this camera.
       const Vec3 up_camera = R_world_camera.transpose() * Vec3(0.0, -1.0, 0.0);
       auto range = rangeFromHeight(*extent, input.camera, up_camera);
-      if (range && config_.floor_contact_range) {
-        if (!floor_)
-          floor_ = floor_average_.update(estimateFloorPlane(input.depth_m, input.camera, up_camera),
-                                         input.T_world_camera, input.tracked);
-        if (*floor_) {
-          // Where the soles meet the floor, no stature assumed: kept when the stature's range
-          // agrees within its 3 sigma (else the mask's lowest row is not the soles: legs lost
-          // to erosion or hidden), and then used alone (a floor's 1-2 % against a stature's
-          // population spread of 5 %: the simulated approach's second walker read 7.5 % near by
-          // its height, +0.7 % by its soles, docs/tracking.md "Session 18").
-          const auto contact = rangeFromFloorContact(*extent, input.camera, **floor_);
-          if (contact && std::abs(contact->range_m - range->range_m) <= 3.0 * range->sigma_range_m)
-            range = contact;
-        }
+      if (range && config_.floor_contact_range && floor_) {
+        // Where the soles meet the floor, no stature assumed: kept when the stature's range
+        // agrees within its 3 sigma (else the mask's lowest row is not the soles: legs lost
+        // to erosion or hidden), and then used alone (a floor's 1-2 % against a stature's
+        // population spread of 5 %: the simulated approach's second walker read 7.5 % near by
+        // its height, +0.7 % by its soles, docs/tracking.md "Session 18").
+        const auto contact = rangeFromFloorContact(*extent, input.camera, *floor_);
+        if (contact && std::abs(contact->range_m - range->range_m) <= 3.0 * range->sigma_range_m)
+          range = contact;
       }
       // Depth of the mask, or of what borders it, nearer than the range allows (2 sigma): not a
       // whole person (an arm beside a cabinet in the simulated crossing read 10 m at 3.9 m).

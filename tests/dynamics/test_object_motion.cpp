@@ -216,3 +216,25 @@ TEST(KalmanCv, AVelocityMeasuredAcrossTheRayLeavesTheComponentAlongItAlone) {
   EXPECT_NEAR(across.covariance()(3, 3), 0.36 / 1.36, 1e-9);
   EXPECT_LT((across.covariance() - across.covariance().transpose()).norm(), 1e-12);
 }
+
+TEST(KalmanCv, AVelocityComponentPseudoMeasurementMovesOnlyThatComponent) {
+  // A filter that heard (1.2, 0.4, 0) m/s hears "0 +- 0.3 m/s along the up axis (-y)": the
+  // vertical component shrinks by the scalar Kalman gain, the horizontal ones keep their value
+  // (the prior's axes are uncorrelated), and a zero sigma or axis changes nothing.
+  const KalmanCvNoise noise{0.5, 0.05, 0.6, 1.0};
+  KalmanCv filter(Vec3(0, 0, 3), noise);
+  filter.updateVelocity(Vec3(1.2, 0.4, 0.0));
+  const double p_vy = filter.covariance()(4, 4);
+  const double vy = filter.velocity().y();
+  const Vec3 up(0.0, -2.0, 0.0);  // any length: the axis is normalised
+  KalmanCv untouched = filter;
+  untouched.updateVelocityAlong(up, 0.0, 0.0);
+  untouched.updateVelocityAlong(Vec3::Zero(), 0.0, 0.3);
+  EXPECT_EQ(untouched.velocity(), filter.velocity());
+  filter.updateVelocityAlong(up, 0.0, 0.3);
+  EXPECT_NEAR(filter.velocity().y(), vy * 0.09 / (p_vy + 0.09), 1e-9);
+  EXPECT_NEAR(filter.velocity().x(), 1.2 / 1.36, 1e-9);
+  EXPECT_NEAR(filter.velocity().z(), 0.0, 1e-9);
+  EXPECT_NEAR(filter.covariance()(4, 4), p_vy * 0.09 / (p_vy + 0.09), 1e-9);
+  EXPECT_LT((filter.covariance() - filter.covariance().transpose()).norm(), 1e-12);
+}

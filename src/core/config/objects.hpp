@@ -18,6 +18,7 @@ struct ObjectTrackingConfig {
   int flow_finest_scale = 1;
   int flow_refinement_iterations = 0;
   bool floor_contact_range = true;
+  double vertical_speed_sigma_mps = 0.3;
   double match_min_score = 0.3;
   double depth_band_m = 0.5;
   double centre_behind_surface_m = 0.15;
@@ -76,6 +77,12 @@ struct ObjectTrackingConfig {
       "of by a stature "
       "prior, when the two ranges agree within 3 sigma of the stature's (docs/tracking.md "
       "'Session 18')");
+    v("vertical_speed_sigma_mps", vertical_speed_sigma_mps,
+      "people and the objects they push move on the floor: every frame the filter is told the "
+      "velocity along the floor's normal is 0 +- this (m/s; a stair climber's rise, ~0.3), which "
+      "keeps a gait's bob and the centre's jitter out of the velocity; 0: off (docs/tracking.md "
+      "'Session 19')",
+      Range{0, 100});
     v("match_min_score", match_min_score,
       "track-instance match: least (flow-point vote share + mask overlap share) to keep an id",
       Range{0, 2});
