@@ -62,10 +62,10 @@ std::optional<CameraFloor> estimateFloorPlane(const cv::Mat& depth_m, const Pinh
 }
 
 std::optional<CameraFloor> FloorAverage::update(const std::optional<CameraFloor>& fit_camera,
-                                                const SE3& T_world_camera, bool tracked) {
+                                                const SE3& T_world_camera) {
   const Mat3 R = T_world_camera.linear();
   const Vec3 t = T_world_camera.translation();
-  if (fit_camera && tracked) {
+  if (fit_camera) {
     // n_c . p_c = d_c with p_c = R^T (p_w - t): (R n_c) . p_w = d_c + (R n_c) . t.
     const Vec3 n_world = R * fit_camera->normal_camera;
     const double offset_world = fit_camera->offset_m + n_world.dot(t);
@@ -79,8 +79,7 @@ std::optional<CameraFloor> FloorAverage::update(const std::optional<CameraFloor>
       offset_world_m_ = (1.0 - w) * offset_world_m_ + w * offset_world;
     }
   }
-  if (frames_ == 0) return tracked ? std::nullopt : fit_camera;
-  if (!tracked) return fit_camera;  // the pose that would carry the average is not known
+  if (frames_ == 0) return std::nullopt;
   CameraFloor out;
   out.normal_camera = R.transpose() * normal_world_;
   out.offset_m = offset_world_m_ - normal_world_.dot(t);

@@ -30,6 +30,12 @@ struct CameraFloorOptions {
   uint64_t seed = 1;              ///< same image, same plane
 };
 
+/// The world's up seen from a camera at T_world_camera: the world frame is the first camera's,
+/// whose -y is taken as up (the floor fit's expected normal, the stature range's vertical).
+inline Vec3 worldUpInCamera(const SE3& T_world_camera) {
+  return T_world_camera.linear().transpose() * Vec3(0.0, -1.0, 0.0);
+}
+
 /// The dominant plane among the depth points of the image's lower part whose upward normal lies
 /// within max_tilt_deg of `up_camera` (the world's up seen from this camera) and below the
 /// camera; RANSAC, then a least-squares refit to its inliers. None when too few points support
@@ -44,10 +50,10 @@ std::optional<CameraFloor> estimateFloorPlane(const cv::Mat& depth_m, const Pinh
 /// out: a table top or a ramp, not the floor.
 class FloorAverage {
  public:
-  /// Takes this frame's fit (camera frame; none: nothing to add) when the frame's pose is
-  /// tracked, and returns the averaged floor seen from this camera (none before any fit).
+  /// Takes this frame's fit (camera frame; none: nothing to add) at this frame's tracked pose,
+  /// and returns the averaged floor seen from this camera (none before any fit).
   std::optional<CameraFloor> update(const std::optional<CameraFloor>& fit_camera,
-                                    const SE3& T_world_camera, bool tracked);
+                                    const SE3& T_world_camera);
 
  private:
   static constexpr int kMemoryFrames = 30;     ///< the average's weight on a new fit: 1/30 at least

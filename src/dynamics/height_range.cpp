@@ -25,6 +25,11 @@ Mat3 frameCovariance(const Vec3& p_camera, double along_m, double across_sigma_m
   return along_m * along_m * along + across_m * across_m * (Mat3::Identity() - along);
 }
 
+/// The viewing ray (z = 1) through the body axis's column at image row v.
+Vec3 axisRay(const PersonExtent& extent, double v, const PinholeCamera& camera) {
+  return Vec3((extent.column_px - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1.0);
+}
+
 }  // namespace
 
 std::optional<PersonExtent> personExtent(const cv::Mat& labels, const Instance& instance,
@@ -110,10 +115,8 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
   const double height_px = extent.heightPx();
   if (!(height_px > 0.0) || !(options.stature.mean_m > 0.0) || up_camera.norm() < 1e-9)
     return std::nullopt;
-  const auto ray = [&](double v) {
-    return Vec3((extent.column_px - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1.0);
-  };
-  const Vec3 r_top = ray(extent.top_px), r_bottom = ray(extent.bottom_px);
+  const Vec3 r_top = axisRay(extent, extent.top_px, camera);
+  const Vec3 r_bottom = axisRay(extent, extent.bottom_px, camera);
   // a·r_top − b·r_bottom = H·up, in least squares (exact for a camera whose x axis is level).
   Eigen::Matrix<double, 3, 2> A;
   A.col(0) = r_top;
@@ -142,14 +145,12 @@ namespace {
 /// do not meet the floor ahead of the camera or the centre falls below it.
 std::optional<Vec3> torsoOverSoles(const PersonExtent& extent, double bottom_px,
                                    const PinholeCamera& camera, const Vec3& n, double offset_m) {
-  const auto ray = [&](double v) {
-    return Vec3((extent.column_px - camera.cx) / camera.fx, (v - camera.cy) / camera.fy, 1.0);
-  };
-  const Vec3 r_soles = ray(bottom_px);
+  const Vec3 r_soles = axisRay(extent, bottom_px, camera);
   const double along = n.dot(r_soles);
   if (!(offset_m < 0.0) || !(along < 0.0)) return std::nullopt;
   const Vec3 soles = (offset_m / along) * r_soles;
-  const Vec3 r_torso = ray(extent.top_px + kTorsoCentreBelowTop * (bottom_px - extent.top_px));
+  const Vec3 r_torso =
+      axisRay(extent, extent.top_px + kTorsoCentreBelowTop * (bottom_px - extent.top_px), camera);
   // c·r_torso = soles + h·n in least squares: the torso on the vertical through the soles.
   Eigen::Matrix<double, 3, 2> A;
   A.col(0) = r_torso;

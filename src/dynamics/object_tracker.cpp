@@ -48,10 +48,9 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
   floor_.reset();
   const bool floor_needed = config_.floor_contact_range || config_.vertical_speed_sigma_mps > 0.0;
   if (floor_needed && input.tracked && (!tracks_.empty() || !input.instances.items.empty())) {
-    // Expected up: the first camera's (the world frame's) -y, seen from this camera.
-    const Vec3 up_camera = input.T_world_camera.linear().transpose() * Vec3(0.0, -1.0, 0.0);
-    floor_ = floor_average_.update(estimateFloorPlane(input.depth_m, input.camera, up_camera),
-                                   input.T_world_camera, input.tracked);
+    floor_ = floor_average_.update(
+        estimateFloorPlane(input.depth_m, input.camera, worldUpInCamera(input.T_world_camera)),
+        input.T_world_camera);
   }
   // 1. Every track's points into this frame along the shared flow.
   std::vector<Carried> carried(tracks_.size());

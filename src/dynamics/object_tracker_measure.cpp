@@ -53,9 +53,7 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
   if (little_depth && track.class_name == "person" && !track.ranges_refuted)
     if (const auto extent = personExtent(input.instances.labels, *instance)) {
       const Mat3 R_world_camera = input.T_world_camera.linear();
-      // Up: the first camera's (the world frame's) -y, seen from this camera.
-      const Vec3 up_camera = R_world_camera.transpose() * Vec3(0.0, -1.0, 0.0);
-      auto range = rangeFromHeight(*extent, input.camera, up_camera);
+      auto range = rangeFromHeight(*extent, input.camera, worldUpInCamera(input.T_world_camera));
       if (range && config_.floor_contact_range && floor_) {
         // Where the soles meet the floor, no stature assumed: kept when the stature's range
         // agrees within its 3 sigma (else the mask's lowest row is not the soles: legs lost

@@ -75,16 +75,16 @@ TEST(CameraFloor, TheAverageLeavesOutAFitFarFromTheFloor) {
   // Ten frames of the floor, then a table top 0.9 m higher: the average stays on the floor.
   FloorAverage average;
   const SE3 pose = SE3::Identity();
-  for (int i = 0; i < 10; ++i) ASSERT_TRUE(average.update(trueFloor(), pose, true));
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(average.update(trueFloor(), pose));
   CameraFloor table = trueFloor();
   table.offset_m += 0.9;
-  const auto seen = average.update(table, pose, true);
+  const auto seen = average.update(table, pose);
   ASSERT_TRUE(seen);
   EXPECT_NEAR(seen->offset_m, -kCameraHeightM, 1e-6);
   // The camera rises 0.1 m: the averaged floor is seen 0.1 m further below it.
   SE3 raised = SE3::Identity();
   raised.translation() = 0.1 * trueFloor().normal_camera;  // world = the first camera's frame
-  const auto from_raised = average.update(std::nullopt, raised, true);
+  const auto from_raised = average.update(std::nullopt, raised);
   ASSERT_TRUE(from_raised);
   EXPECT_NEAR(from_raised->offset_m, -kCameraHeightM - 0.1, 1e-6);
 }

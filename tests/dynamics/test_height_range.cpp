@@ -6,6 +6,7 @@
 
 #include "dynamics/height_range.hpp"
 #include "dynamics/object_tracker.hpp"
+#include "level_floor.hpp"
 
 using namespace dynanav;
 
@@ -352,11 +353,7 @@ TEST(ObjectTracker, APersonBeyondTheDepthRangeStandsWhereItsSolesMeetTheFloor) {
   // on the fitted floor place it within a few centimetres.
   const PinholeCamera c = camera();
   const double floor_below_m = 1.5, stature_m = 1.55;
-  cv::Mat depth(kH, kW, CV_32F, cv::Scalar(0.f));
-  for (int v = 0; v < kH; ++v) {
-    const double z = floor_below_m * c.fy / (v - c.cy);
-    if (v > c.cy && z <= 4.5) depth.row(v).setTo(float(z));
-  }
+  const cv::Mat depth = test::levelFloorDepth(c, floor_below_m, 4.5);
   const Vec3 soles(0.3, floor_below_m, 9.0), crown(0.3, floor_below_m - stature_m, 9.0);
   const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
   const Instances instances = bodyMask(crown, soles, c, 0.5);

@@ -74,9 +74,8 @@ struct ObjectTrackingConfig {
     v("floor_contact_range", floor_contact_range,
       "a person beyond the depth sensor's range is placed where its soles meet the floor (a "
       "plane fitted to the depth of the image's lower part, averaged in the world frame) instead "
-      "of by a stature "
-      "prior, when the two ranges agree within 3 sigma of the stature's (docs/tracking.md "
-      "'Session 18')");
+      "of by a stature prior, when the two ranges agree within 3 sigma of the stature's "
+      "(docs/tracking.md 'Session 18')");
     v("vertical_speed_sigma_mps", vertical_speed_sigma_mps,
       "people and the objects they push move on the floor: every frame the filter is told the "
       "velocity along the floor's normal is 0 +- this (m/s; a stair climber's rise, ~0.3), which "
