@@ -75,7 +75,9 @@ std::vector<GroundMotion> MotionHistory::update(double stamp_s,
   motions.reserve(objects.size());
   for (const TrackedObject& o : objects) {
     std::deque<Sample>& history = kept[o.id];
-    if (auto it = samples_.find(o.id); it != samples_.end()) history = std::move(it->second);
+    // A restarted track's earlier centres belong to another extent of it: not its motion.
+    if (auto it = samples_.find(o.id); it != samples_.end() && !o.restarted)
+      history = std::move(it->second);
     GroundMotion m = filterMotion(o);
     history.push_back({stamp_s, m.p, m.cov_pp});
     while (stamp_s - history.front().stamp_s > config_.velocity_window_s) history.pop_front();

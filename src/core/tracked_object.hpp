@@ -39,6 +39,10 @@ struct TrackedObject {
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  ///< [p, v], world
   int missed_frames = 0;   ///< consecutive frames the segmenter did not see it (carried by flow)
   int motion_inliers = 0;  ///< inliers of this frame's rigid-motion estimate (0: none)
+  /// The tracker's estimate started afresh this frame at a centre the object could not have
+  /// reached from the last one (another extent of it was matched): motion measured over earlier
+  /// centres of this id is void.
+  bool restarted = false;
   std::vector<PathPoint> predicted_path;  ///< empty for static objects
   double visible_share = -1.0;  ///< ground truth only: share of the object in view (< 0: unknown)
 };

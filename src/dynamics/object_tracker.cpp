@@ -162,6 +162,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   track.missed = instance ? 0 : track.missed + 1;
   track.instance = instance ? instance->id : 0;
   track.inliers = 0;
+  track.restarted = false;
   if (dt > 0.0) track.filter.predict(dt);
   if (!input.tracked) {  // no camera pose: no world points; the filter coasts
     track.pixels.clear();
@@ -234,21 +235,35 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool use_motion = config_.motion_velocity_frames < 0 || !whole ||
                             track.whole_centre_frames <= config_.motion_velocity_frames ||
                             !track.prior_dynamic;
-    // An object held still (its velocity clamped at zero, an assumption rather than a
-    // measurement) that the dynamics stage now finds moving has an unknown velocity again: the
-    // filter is told so, and the rigid motion measures it in a frame or two instead of a ramp
-    // from the clamped zero. Its centre, predicted at a standstill, is an assumption too: kept
-    // tight, the distance the object moved meanwhile was read as speed (the pushed box 30 %
-    // fast for 8 frames), so it is reopened by a body's size, as for a released person below.
-    // (People set off on their points instead: session 10's rule.)
-    if (!track.prior_dynamic && track.stationary && instance &&
-        contains(input.dynamics.moving_ids, instance->id)) {
-      track.filter.reopen(kUnmeasuredSigmaM, kInitialVelocitySigmaMps);
-    }
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
     std::optional<Mat3> cov_world = centre->cov_world;
     bool restarted = false;  // the filter starts afresh at this centre
+    // An object that does not move by itself (a chair, a box) whose centre lies where it could
+    // not have got to since the last frame (outside the filter's 99.9 % gate while the segmenter
+    // sees it) shows another extent of itself, not motion: a segment merged with or split from a
+    // neighbour's (static fr1_xyz: a chair's centre jumped 0.85 m in one frame, was read as
+    // 1.9 m/s toward the wearer and raised an urgent warning in a room where nothing moves). The
+    // filter starts afresh there, its velocity unknown again. Judged before a held object found
+    // moving is reopened (below). Not for people: a walker's centre leaves the gate as limbs and
+    // trunk come and go from view, and restarting them lost more than it saved (simulated
+    // office speed 0.140 / 0.144 / 0.172 -> 0.168 / 0.207 / 0.214 m/s, docs/tracking.md
+    // "Session 20").
+    if (instance && !track.prior_dynamic && config_.restart_beyond_gate &&
+        track.filter.normalisedInnovation(p_world, std::nullopt, cov_world) > kChiSquare3Dof999) {
+      track.filter = KalmanCv(p_world, filterNoise(), cov_world);
+      restarted = true;
+    } else if (!track.prior_dynamic && track.stationary && instance &&
+               contains(input.dynamics.moving_ids, instance->id)) {
+      // An object held still (its velocity clamped at zero, an assumption rather than a
+      // measurement) that the dynamics stage now finds moving has an unknown velocity again: the
+      // filter is told so, and the rigid motion measures it in a frame or two instead of a ramp
+      // from the clamped zero. Its centre, predicted at a standstill, is an assumption too: kept
+      // tight, the distance the object moved meanwhile was read as speed (the pushed box 30 %
+      // fast for 8 frames), so it is reopened by a body's size, as for a released person below.
+      // (People set off on their points instead: session 10's rule.)
+      track.filter.reopen(kUnmeasuredSigmaM, kInitialVelocitySigmaMps);
+    }
     if (centre->scale_sigma > 0.0 && track.ranged_scale_sigma <= 0.0) {
       // Depth placed this person before (the filter is metric) and now it is beyond the range:
       // the stature's error is new to the filter. It enters every frame as if independent
@@ -291,6 +306,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool gated_out = !instance && config_.gate_missed &&
                            track.filter.normalisedInnovation(p_world, v_used, cov_world) >
                                (v_used ? kChiSquare6Dof999 : kChiSquare3Dof999);
+    track.restarted = restarted;
     if (!restarted && !gated_out) track.filter.update(p_world, v_used, cov_world);
   } else {
     track.whole_centre_frames = 0;
@@ -493,6 +509,7 @@ TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& in
         statureCovariance(o.p_world, t.filter.velocity(), camera_world, t.ranged_scale_sigma);
   o.missed_frames = t.missed;
   o.motion_inliers = t.inliers;
+  o.restarted = t.restarted;
   if (!t.stationary) {
     o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
     // The stature's error along the predicted ray (an upper bound of the largest eigenvalue).

@@ -78,6 +78,7 @@ class ObjectTracker {
     // 99.9 %): the mask's height is not the person's (a far mask losing head and feet to
     // erosion), so no more ranges for it until depth places it.
     bool ranges_refuted = false;
+    bool restarted = false;  // the filter started afresh this frame at a centre it could not reach
     double last_stamp_s = 0.0;
   };
   struct Carried {  // one track's points carried into this frame

@@ -269,5 +269,31 @@ TEST(MotionFit, CentresAPartialViewCouldNotPlaceBarelyPullTheLine) {
   EXPECT_LT(std::sqrt(weighted.cov_vv(1, 1)), 0.2);
 }
 
+TEST(MotionHistory, ARestartedTrackForgetsTheCentresOfItsOtherExtent) {
+  // A chair reported moving (falsely) stands at 2.5 m for 15 frames; its segment then takes in a
+  // neighbour and its centre jumps 0.5 m nearer. Told that the tracker restarted it there, the
+  // motion is the tracker's (standing); not told, the line through the jump reads an approach.
+  for (const bool told : {true, false}) {
+    MotionHistory history{AssistConfig{}};
+    std::vector<GroundMotion> motion;
+    for (int i = 0; i < 18; ++i) {
+      TrackedObject chair;
+      chair.id = 7;
+      chair.class_name = "chair";
+      chair.dynamic = true;
+      chair.p_world = Vec3(0.0, 0.0, i < 15 ? 2.5 : 2.0);
+      chair.covariance.topLeftCorner<3, 3>() = Mat3::Identity() * 4e-4;
+      chair.covariance.bottomRightCorner<3, 3>() = Mat3::Identity() * 0.01;
+      chair.restarted = told && i == 15;
+      motion = history.update(i / 30.0, {chair});
+    }
+    ASSERT_EQ(motion.size(), 1u);
+    if (told)
+      EXPECT_LT(motion[0].v.norm(), 0.05);
+    else
+      EXPECT_LT(motion[0].v.y(), -0.5);  // toward the wearer (world -z): 0.7 m/s
+  }
+}
+
 }  // namespace
 }  // namespace dynanav

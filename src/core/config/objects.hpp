@@ -12,6 +12,7 @@ struct ObjectTrackingConfig {
   int trunk_min_points = 20;
   int max_missed_frames = 15;
   bool gate_missed = true;
+  bool restart_beyond_gate = true;
   bool first_frame_motion = true;
   bool first_motion_cut_across_ray = true;
   int centre_min_points = 8;
@@ -52,6 +53,11 @@ struct ObjectTrackingConfig {
     v("gate_missed", gate_missed,
       "a track the segmenter misses takes its flow points' centre and motion only when they lie "
       "within the filter's 99.9 % chi-square gate; otherwise it coasts on its prediction");
+    v("restart_beyond_gate", restart_beyond_gate,
+      "an object that does not move by itself (outside prior_dynamic_classes) whose seen centre "
+      "lies outside the filter's 99.9 % chi-square gate shows another extent of itself (a "
+      "segment merged with or split from a neighbour's), not motion: the filter starts afresh "
+      "there, its velocity unknown, and earlier centres no longer give its motion");
     v("first_frame_motion", first_frame_motion,
       "a new moving track's velocity is measured in its first frame, from the previous frame's "
       "points the flow carries onto its mask (else it starts at its prior, 0 +- 1 m/s)");
