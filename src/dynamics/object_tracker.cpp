@@ -238,13 +238,12 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const Vec3 p_world = input.T_world_camera * centre->p_camera;
     const Vec3 camera_world = input.T_world_camera.translation();
     std::optional<Mat3> cov_world = centre->cov_world;
-    bool restarted = false;  // the filter starts afresh at this centre
     // An object that does not move by itself (a chair, a box) whose centre lies where it could
     // not have got to since the last frame (outside the filter's 99.9 % gate while the segmenter
     // sees it) shows another extent of itself, not motion: a segment merged with or split from a
     // neighbour's (static fr1_xyz: a chair's centre jumped 0.85 m in one frame, was read as
-    // 1.9 m/s toward the wearer and raised an urgent warning in a room where nothing moves). The
-    // filter starts afresh there, its velocity unknown again. Judged before a held object found
+    // up to 2.2 m/s toward the wearer and raised an urgent warning in a room where nothing moves).
+    // The filter starts afresh there, its velocity unknown again. Judged before a held object found
     // moving is reopened (below). Not for people: a walker's centre leaves the gate as limbs and
     // trunk come and go from view, and restarting them lost more than it saved (simulated
     // office speed 0.140 / 0.144 / 0.172 -> 0.168 / 0.207 / 0.214 m/s, docs/tracking.md
@@ -252,7 +251,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     if (instance && !track.prior_dynamic && config_.restart_beyond_gate &&
         track.filter.normalisedInnovation(p_world, std::nullopt, cov_world) > kChiSquare3Dof999) {
       track.filter = KalmanCv(p_world, filterNoise(), cov_world);
-      restarted = true;
+      track.restarted = true;
     } else if (!track.prior_dynamic && track.stationary && instance &&
                contains(input.dynamics.moving_ids, instance->id)) {
       // An object held still (its velocity clamped at zero, an assumption rather than a
@@ -295,7 +294,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.ranges_refuted = false;  // placed by depth: its next ranges are judged afresh
       if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
         track.filter = KalmanCv(p_world, filterNoise(), cov_world);
-        restarted = true;
+        track.restarted = true;
       }
     }
     const std::optional<Vec3> v_used = use_motion ? v_measured : std::nullopt;
@@ -306,8 +305,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool gated_out = !instance && config_.gate_missed &&
                            track.filter.normalisedInnovation(p_world, v_used, cov_world) >
                                (v_used ? kChiSquare6Dof999 : kChiSquare3Dof999);
-    track.restarted = restarted;
-    if (!restarted && !gated_out) track.filter.update(p_world, v_used, cov_world);
+    if (!track.restarted && !gated_out) track.filter.update(p_world, v_used, cov_world);
   } else {
     track.whole_centre_frames = 0;
   }

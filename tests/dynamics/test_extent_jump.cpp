@@ -11,8 +11,8 @@ namespace {
 constexpr int kW = 640, kH = 480;
 
 /// Two chairs side by side 2 m away (columns 100-159 and 160-399, rows 150-269) on a wall 4 m
-/// away, nothing moving (zero flow). The segmenter reports the first alone, or from `merged_from`
-/// on one segment covering both (its centre 0.5 m to the right of the first's).
+/// away, nothing moving (zero flow). The segmenter reports the first alone, or (`merged`) one
+/// segment covering both (its centre 0.5 m to the right of the first's).
 struct Scene {
   Instances instances;
   cv::Mat depth_m;
