@@ -45,4 +45,26 @@ DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, in
   return range;
 }
 
+float depthNearestAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
+                         double expected_m) {
+  if (depth_m.empty()) return 0.f;
+  const int u = static_cast<int>(std::lround(pixel.x));
+  const int v = static_cast<int>(std::lround(pixel.y));
+  const int r = std::max(0, radius_px);
+  const int x0 = std::max(0, u - r), x1 = std::min(depth_m.cols - 1, u + r);
+  const int y0 = std::max(0, v - r), y1 = std::min(depth_m.rows - 1, v + r);
+  float best = 0.f;
+  double best_gap = 0.0;
+  for (int y = y0; y <= y1; ++y) {
+    const float* row = depth_m.ptr<float>(y);
+    for (int x = x0; x <= x1; ++x) {
+      const float z = row[x];
+      if (!validDepth(z)) continue;
+      const double gap = std::abs(double(z) - expected_m);
+      if (best == 0.f || gap < best_gap) best = z, best_gap = gap;
+    }
+  }
+  return best;
+}
+
 }  // namespace dynanav

@@ -34,4 +34,9 @@ struct DepthRange {
 /// image); r = 0 reads the pixel itself (rounded, as the keypoint's own depth is read).
 DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px);
 
+/// The valid depth in the (2r+1)² window centred on `pixel` (clipped to the image) nearest to
+/// `expected_m`; 0 when none is valid. r = 0 reads the pixel itself (rounded).
+float depthNearestAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
+                         double expected_m);
+
 }  // namespace dynanav

@@ -35,7 +35,9 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
       const cv::Mat mask = old.instances.mask(instance.id);
       const auto pixels = sampleMaskPixels(mask, config_.sample_step_px);
       std::vector<Vec3> p_old, p_cur;
-      liftFlowCorrespondences(pixels, flow, old.depth_m, input.depth_m, input.camera, p_old, p_cur);
+      const FlowEndDepth end_depth{T_cur_old, config_.scene_flow_end_search_px, &config_};
+      liftFlowCorrespondences(pixels, flow, old.depth_m, input.depth_m, input.camera, p_old, p_cur,
+                              nullptr, end_depth);
       const bool prior = isPriorDynamic(instance, config_);
       // A person's mask grown over a static occluder or the wall beside them reads those points'
       // flow, and their standstill outvotes the body (simulated office, masks grown 5 px: a
@@ -55,7 +57,8 @@ PriorVerdicts PriorVerifier::verify(const VerifierInput& input,
                                            footprint_px + config_.scene_flow_reference_px,
                                            config_.sample_step_px);
         std::vector<Vec3> q_old, q_cur;
-        liftFlowCorrespondences(ring, flow, old.depth_m, input.depth_m, input.camera, q_old, q_cur);
+        liftFlowCorrespondences(ring, flow, old.depth_m, input.depth_m, input.camera, q_old, q_cur,
+                                nullptr, end_depth);
         background = backgroundMotion(q_old, q_cur, T_cur_old, config_);
       }
       const SceneFlowVerdict verdict =

@@ -8,6 +8,7 @@
 
 #include "core/frame.hpp"
 #include "core/median.hpp"
+#include "dynamics/depth_tolerance.hpp"
 
 namespace dynanav {
 double sceneFlowPointThreshold(double z_prev_m, double z_cur_m, const DynamicsConfig& config) {
@@ -135,12 +136,25 @@ float depthAt(const cv::Mat& depth_m, float u, float v) {
   if (x < 0 || y < 0 || x >= depth_m.cols || y >= depth_m.rows) return 0.f;
   return depth_m.at<float>(y, x);
 }
+/// The depth at a flow's end as FlowEndDepth describes.
+float endDepth(const cv::Mat& cur_depth_m, const cv::Point2f& end, const Vec3& p_prev_camera,
+               const FlowEndDepth& end_depth) {
+  const float own_m = depthAt(cur_depth_m, end.x, end.y);
+  if (end_depth.radius_px <= 0) return own_m;
+  CV_Assert(end_depth.config != nullptr);
+  const double expected_m = (end_depth.T_cur_prev * p_prev_camera).z();
+  const DepthRange range = depthRangeAround(cur_depth_m, end, end_depth.radius_px);
+  const double jump_m = 2.0 * sceneFlowPointThreshold(expected_m, expected_m, *end_depth.config);
+  if (!(range.min_m > 0.f) || double(range.max_m - range.min_m) <= jump_m) return own_m;
+  return depthNearestAround(cur_depth_m, end, end_depth.radius_px, expected_m);
+}
 }  // namespace
 
 void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
                              const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
                              const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
-                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept) {
+                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept,
+                             const FlowEndDepth& end_depth) {
   CV_Assert(flow.type() == CV_32FC2);
   p_prev_camera.clear();
   p_cur_camera.clear();
@@ -151,9 +165,12 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
     const cv::Vec2f f = flow.at<cv::Vec2f>(p);
     const float u1 = float(p.x) + f[0], v1 = float(p.y) + f[1];
     if (!camera.inImage(u1, v1)) continue;
-    const float z0 = prev_depth_m.at<float>(p), z1 = depthAt(cur_depth_m, u1, v1);
-    if (!validDepth(z0) || !validDepth(z1)) continue;
-    p_prev_camera.push_back(camera.backproject(p.x, p.y, z0));
+    const float z0 = prev_depth_m.at<float>(p);
+    if (!validDepth(z0)) continue;
+    const Vec3 p_prev = camera.backproject(p.x, p.y, z0);
+    const float z1 = endDepth(cur_depth_m, {u1, v1}, p_prev, end_depth);
+    if (!validDepth(z1)) continue;
+    p_prev_camera.push_back(p_prev);
     p_cur_camera.push_back(camera.backproject(u1, v1, z1));
     if (kept) kept->push_back(i);
   }

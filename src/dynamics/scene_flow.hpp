@@ -71,6 +71,20 @@ std::vector<cv::Point> sampleRingPixels(const cv::Mat& object_mask, const cv::Ma
 /// Pixels on a regular grid (every `step` px) inside `mask` (CV_8U, non-zero = inside).
 std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);
 
+/// How liftFlowCorrespondences reads the depth at a flow's end. A dense flow is a pixel or two
+/// off where depth jumps, and on a thin or see-through object (a chair's back, its legs) that
+/// pixel swaps the object's depth for the wall's behind it: a static point would move by the
+/// gap. So where the depths within radius_px of the end span two surfaces (they spread more than
+/// twice sceneFlowPointThreshold at the expected depth), the one nearest to the depth the point
+/// would have now had it stood still (T_cur_prev applied to its previous position) is taken. On
+/// one surface the end pixel's own depth is kept: the nearest of many noisy depths would shrink
+/// every displacement by the noise (a far walker's approach would read as standing).
+struct FlowEndDepth {
+  SE3 T_cur_prev = SE3::Identity();
+  int radius_px = 0;                       ///< 0: the end pixel's own depth
+  const DynamicsConfig* config = nullptr;  ///< for the threshold; required when radius_px > 0
+};
+
 /// Follows sampled pixels of the previous frame through a dense flow field (CV_32FC2, previous →
 /// current, e.g. DIS) and lifts both ends with depth. Pixels that leave the image or lack depth
 /// at either end are dropped; `kept` (optional) receives the indices of the pixels kept.
@@ -79,7 +93,8 @@ std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);
 void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
                              const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
                              const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
-                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept = nullptr);
+                             std::vector<Vec3>& p_cur_camera, std::vector<size_t>* kept = nullptr,
+                             const FlowEndDepth& end_depth = {});
 
 /// The current instance an old object's sampled pixels land on when followed along the flow
 /// (old frame → current); 0 if no instance gets a third of them. Following the flow matters for

@@ -91,6 +91,65 @@ TEST(SceneFlow, SamplingAndLiftingThroughFlow) {
   EXPECT_NEAR(b[0].x(), (pixels[1].x + 3 - 40) * 2.1 / 50.0, 1e-6);
 }
 
+TEST(SceneFlow, AFlowEndOneOrTwoPixelsOffAThinPoleReadsThePolesDepthWithTheSearch) {
+  PinholeCamera cam;
+  cam.width = 80;
+  cam.height = 60;
+  cam.fx = cam.fy = 50;
+  cam.cx = 40;
+  cam.cy = 30;
+  // A static pole 3 px wide at 1.5 m before a wall at 4 m; nothing moves, but the flow at the
+  // pole's pixels is 2 px off (a patch-based flow blends the pole into the wall beside it).
+  cv::Mat depth(60, 80, CV_32F, cv::Scalar(4.f));
+  depth.colRange(39, 42).setTo(1.5f);
+  const cv::Mat flow(60, 80, CV_32FC2, cv::Scalar(2.f, 0.f));
+  const std::vector<cv::Point> pixels = {{40, 20}, {40, 30}, {40, 40}};
+  std::vector<Vec3> a, b;
+  liftFlowCorrespondences(pixels, flow, depth, depth, cam, a, b);
+  ASSERT_EQ(b.size(), 3u);
+  for (const Vec3& p : b) EXPECT_FLOAT_EQ(float(p.z()), 4.f);  // the wall: moved 2.5 m
+  const DynamicsConfig config;
+  FlowEndDepth search;
+  search.radius_px = 2;
+  search.config = &config;
+  liftFlowCorrespondences(pixels, flow, depth, depth, cam, a, b, nullptr, search);
+  ASSERT_EQ(b.size(), 3u);
+  for (const Vec3& p : b) EXPECT_FLOAT_EQ(float(p.z()), 1.5f);
+  // A pole that did come 0.5 m nearer still moves: no depth near 1.5 m lies within the window.
+  cv::Mat nearer(60, 80, CV_32F, cv::Scalar(4.f));
+  nearer.colRange(39, 42).setTo(1.0f);
+  liftFlowCorrespondences(pixels, flow, depth, nearer, cam, a, b, nullptr, search);
+  ASSERT_EQ(b.size(), 3u);
+  for (const Vec3& p : b) EXPECT_FLOAT_EQ(float(p.z()), 1.0f);
+}
+
+TEST(SceneFlow, OnOneNoisySurfaceTheFlowEndKeepsItsOwnDepth) {
+  PinholeCamera cam;
+  cam.width = 80;
+  cam.height = 60;
+  cam.fx = cam.fy = 50;
+  cam.cx = 40;
+  cam.cy = 30;
+  // A walker 4 m away came 9 cm nearer; depth noise 2.6 cm per pixel. The nearest of the 25
+  // noisy depths around each end would take back most of the 9 cm: the search must not look.
+  std::mt19937 rng(3);
+  std::normal_distribution<float> noise(0.f, 0.026f);
+  cv::Mat before(60, 80, CV_32F, cv::Scalar(4.f)), after(60, 80, CV_32F);
+  for (int v = 0; v < 60; ++v)
+    for (int u = 0; u < 80; ++u) after.at<float>(v, u) = 3.91f + noise(rng);
+  const cv::Mat still(60, 80, CV_32FC2, cv::Scalar(0.f, 0.f));
+  const auto pixels = sampleMaskPixels(cv::Mat(60, 80, CV_8U, cv::Scalar(255)), 10);
+  const DynamicsConfig config;
+  FlowEndDepth search;
+  search.radius_px = 2;
+  search.config = &config;
+  std::vector<Vec3> a, b, a_own, b_own;
+  liftFlowCorrespondences(pixels, still, before, after, cam, a, b, nullptr, search);
+  liftFlowCorrespondences(pixels, still, before, after, cam, a_own, b_own);
+  ASSERT_EQ(b.size(), b_own.size());
+  for (size_t i = 0; i < b.size(); ++i) EXPECT_EQ(b[i].z(), b_own[i].z());
+}
+
 namespace {
 
 TEST(SceneFlow, LabelFollowsTheFlowNotTheOldMask) {

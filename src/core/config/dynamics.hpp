@@ -30,6 +30,7 @@ struct DynamicsConfig {
   bool scene_flow_mean_check = true;
   int scene_flow_reference_px = 32;
   double scene_flow_prior_depth_band_m = 0.5;
+  int scene_flow_end_search_px = 2;
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
@@ -119,6 +120,14 @@ struct DynamicsConfig {
       "point must also move scene_flow_point_sigmas of its robust spread (a flow dragged by a "
       "walker in front or blurred moves both; 0 = against the camera's motion alone)",
       Range{0, 1000});
+    v("scene_flow_end_search_px", scene_flow_end_search_px,
+      "scene flow: where the depths within this many px of a flow's end span two surfaces "
+      "(spread over twice the point threshold), the one nearest to the depth the point would "
+      "have had it stood still is taken: a dense flow is off by a pixel or two where depth jumps, "
+      "and on a thin or see-through object (a chair) that pixel swaps its depth for the wall's "
+      "behind it (default 2: one pixel of the half-size flow the verifier computes; 0 = the end "
+      "pixel's own depth)",
+      Range{0, 100});
     v("scene_flow_prior_depth_band_m", scene_flow_prior_depth_band_m,
       "scene flow of a prior-dynamic object (a person) takes only its sampled points within this "
       "depth (m) of their median: a mask grown over an occluder or the background in front of "
