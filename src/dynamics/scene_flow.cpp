@@ -138,17 +138,27 @@ float depthAt(const cv::Mat& depth_m, float u, float v) {
 }
 /// The depth at a flow's end as FlowEndDepth describes.
 float endDepth(const cv::Mat& cur_depth_m, const cv::Point2f& end, const Vec3& p_prev_camera,
-               const FlowEndDepth& end_depth) {
+               const FlowEndDepth& end_depth, double focal_px) {
   const float own_m = depthAt(cur_depth_m, end.x, end.y);
   if (end_depth.radius_px <= 0) return own_m;
   CV_Assert(end_depth.config != nullptr);
   const double expected_m = (end_depth.T_cur_prev * p_prev_camera).z();
-  const DepthRange range = depthRangeAround(cur_depth_m, end, end_depth.radius_px);
+  const int radius_px = flowEndSearchRadiusPx(end_depth, expected_m, focal_px);
+  const DepthRange range = depthRangeAround(cur_depth_m, end, radius_px);
   const double jump_m = 2.0 * sceneFlowPointThreshold(expected_m, expected_m, *end_depth.config);
   if (!(range.min_m > 0.f) || double(range.max_m - range.min_m) <= jump_m) return own_m;
-  return depthNearestAround(cur_depth_m, end, end_depth.radius_px, expected_m);
+  return depthNearestAround(cur_depth_m, end, radius_px, expected_m);
 }
 }  // namespace
+
+int flowEndSearchRadiusPx(const FlowEndDepth& end_depth, double expected_z_m, double focal_px) {
+  if (end_depth.radius_px <= 0) return 0;
+  CV_Assert(end_depth.config != nullptr);
+  double radius_px = end_depth.radius_px;
+  if (end_depth.parallax && expected_z_m > 0.0)
+    radius_px += focal_px * end_depth.T_cur_prev.translation().norm() / expected_z_m;
+  return int(std::lround(std::min(radius_px, double(end_depth.config->depth_test_max_radius_px))));
+}
 
 void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
                              const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
@@ -168,7 +178,7 @@ void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv
     const float z0 = prev_depth_m.at<float>(p);
     if (!validDepth(z0)) continue;
     const Vec3 p_prev = camera.backproject(p.x, p.y, z0);
-    const float z1 = endDepth(cur_depth_m, {u1, v1}, p_prev, end_depth);
+    const float z1 = endDepth(cur_depth_m, {u1, v1}, p_prev, end_depth, camera.fx);
     if (!validDepth(z1)) continue;
     p_prev_camera.push_back(p_prev);
     p_cur_camera.push_back(camera.backproject(u1, v1, z1));

@@ -79,11 +79,21 @@ std::vector<cv::Point> sampleMaskPixels(const cv::Mat& mask, int step);
 /// would have now had it stood still (T_cur_prev applied to its previous position) is taken. On
 /// one surface the end pixel's own depth is kept: the nearest of many noisy depths would shrink
 /// every displacement by the noise (a far walker's approach would read as standing).
+/// The radius grows (`parallax`) by the parallax the camera's translation gives the point
+/// (flowEndSearchRadiusPx): the dense flow blends patches of both surfaces, whose image motions
+/// differ by their parallax, so the flow at an edge is off by up to that much.
 struct FlowEndDepth {
   SE3 T_cur_prev = SE3::Identity();
   int radius_px = 0;                       ///< 0: the end pixel's own depth
-  const DynamicsConfig* config = nullptr;  ///< for the threshold; required when radius_px > 0
+  bool parallax = false;                   ///< widen radius_px by the point's parallax
+  const DynamicsConfig* config = nullptr;  ///< thresholds and the cap; required when radius_px > 0
 };
+
+/// Search radius (px) around a flow's end for a point expected at `expected_z_m` now: radius_px,
+/// plus (parallax) focal_px · |translation of T_cur_prev| / z — the point's image motion from the
+/// camera's translation, which bounds how much a nearer surface's flow differs from one at
+/// infinity — at most config->depth_test_max_radius_px. 0 when radius_px is 0.
+int flowEndSearchRadiusPx(const FlowEndDepth& end_depth, double expected_z_m, double focal_px);
 
 /// Follows sampled pixels of the previous frame through a dense flow field (CV_32FC2, previous →
 /// current, e.g. DIS) and lifts both ends with depth. Pixels that leave the image or lack depth

@@ -123,6 +123,24 @@ TEST(SceneFlow, AFlowEndOneOrTwoPixelsOffAThinPoleReadsThePolesDepthWithTheSearc
   for (const Vec3& p : b) EXPECT_FLOAT_EQ(float(p.z()), 1.0f);
 }
 
+TEST(SceneFlow, TheSearchAtAFlowsEndWidensByThePointsParallax) {
+  DynamicsConfig config;
+  FlowEndDepth search;
+  search.config = &config;
+  search.T_cur_prev.translation() = Vec3(0.03, 0.0, 0.04);  // 5 cm over the gap
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 0);  // no search at all
+  search.radius_px = 2;
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 2);  // parallax off
+  search.parallax = true;
+  // 500 px * 0.05 m / 1.5 m = 16.7 px of parallax at 1.5 m, 5 px at 5 m.
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 19);
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 5.0, 500.0), 7);
+  config.depth_test_max_radius_px = 10;  // capped
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 10);
+  search.T_cur_prev = SE3::Identity();  // a camera that only turns gives no parallax
+  EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 2);
+}
+
 TEST(SceneFlow, OnOneNoisySurfaceTheFlowEndKeepsItsOwnDepth) {
   PinholeCamera cam;
   cam.width = 80;

@@ -31,6 +31,7 @@ struct DynamicsConfig {
   int scene_flow_reference_px = 32;
   double scene_flow_prior_depth_band_m = 0.5;
   int scene_flow_end_search_px = 2;
+  bool scene_flow_end_parallax = true;
   bool cull_vanished_points = false;
   bool cull_moving_object_points = true;
   int sample_step_px = 5;
@@ -88,7 +89,7 @@ struct DynamicsConfig {
       Range{0, 1000});
     v("depth_test_max_radius_px", depth_test_max_radius_px,
       "largest search radius (px) of the motion-aware depth test (0 = compare the keypoint's own "
-      "depth only, as DynaSLAM)",
+      "depth only, as DynaSLAM) and of scene flow's search at a flow's end",
       Range{0, 200});
     v("instance_dynamic_share", instance_dynamic_share,
       "an instance moves when this share of its checked keypoints fails the depth test",
@@ -128,6 +129,12 @@ struct DynamicsConfig {
       "behind it (default 2: one pixel of the half-size flow the verifier computes; 0 = the end "
       "pixel's own depth)",
       Range{0, 100});
+    v("scene_flow_end_parallax", scene_flow_end_parallax,
+      "scene flow of an object outside prior_dynamic_classes (a chair): scene_flow_end_search_px "
+      "grows by the point's parallax over the gap (fx * camera translation / depth, at most "
+      "depth_test_max_radius_px): a dense flow at a depth edge blends the patches of both "
+      "surfaces, whose image motions differ by their parallax (people keep the narrow search: a "
+      "wide one also finds the floor at a walker's feet at the old depth)");
     v("scene_flow_prior_depth_band_m", scene_flow_prior_depth_band_m,
       "scene flow of a prior-dynamic object (a person) takes only its sampled points within this "
       "depth (m) of their median: a mask grown over an occluder or the background in front of "
