@@ -91,8 +91,9 @@ struct FlowEndDepth {
 
 /// Search radius (px) around a flow's end for a point expected at `expected_z_m` now: radius_px,
 /// plus (parallax) focal_px · |translation of T_cur_prev| / z — the point's image motion from the
-/// camera's translation, which bounds how much a nearer surface's flow differs from one at
-/// infinity — at most config->depth_test_max_radius_px. 0 when radius_px is 0.
+/// camera's translation, which bounds how much its flow differs from that of any surface behind
+/// it (a point on the far surface, the wall seen through a chair, gets the smaller radius of its
+/// own depth) — at most config->depth_test_max_radius_px. 0 when radius_px is 0.
 int flowEndSearchRadiusPx(const FlowEndDepth& end_depth, double expected_z_m, double focal_px);
 
 /// Follows sampled pixels of the previous frame through a dense flow field (CV_32FC2, previous →

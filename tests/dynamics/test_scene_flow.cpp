@@ -138,6 +138,7 @@ TEST(SceneFlow, TheSearchAtAFlowsEndWidensByThePointsParallax) {
   config.depth_test_max_radius_px = 10;  // capped
   EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 10);
   search.T_cur_prev = SE3::Identity();  // a camera that only turns gives no parallax
+  search.T_cur_prev.linear() = Eigen::AngleAxisd(0.2, Vec3::UnitY()).toRotationMatrix();
   EXPECT_EQ(flowEndSearchRadiusPx(search, 1.5, 500.0), 2);
 }
 
