@@ -8,6 +8,16 @@
 using namespace dynanav;
 
 namespace {
+/// An 80 x 60 px pinhole camera, f = 50 px, centred.
+PinholeCamera smallCamera() {
+  PinholeCamera cam;
+  cam.width = 80;
+  cam.height = 60;
+  cam.fx = cam.fy = 50;
+  cam.cx = 40;
+  cam.cy = 30;
+  return cam;
+}
 std::vector<Vec3> blob(int n, const Vec3& centre, std::mt19937& rng) {
   std::normal_distribution<double> d(0.0, 0.15);
   std::vector<Vec3> points;
@@ -65,12 +75,7 @@ TEST(SceneFlow, FewPointsGiveNoVerdict) {
 }
 
 TEST(SceneFlow, SamplingAndLiftingThroughFlow) {
-  PinholeCamera cam;
-  cam.width = 80;
-  cam.height = 60;
-  cam.fx = cam.fy = 50;
-  cam.cx = 40;
-  cam.cy = 30;
+  const PinholeCamera cam = smallCamera();
   cv::Mat mask = cv::Mat::zeros(60, 80, CV_8U);
   mask(cv::Rect(20, 10, 20, 20)).setTo(255);
   const auto pixels = sampleMaskPixels(mask, 5);
@@ -92,12 +97,7 @@ TEST(SceneFlow, SamplingAndLiftingThroughFlow) {
 }
 
 TEST(SceneFlow, AFlowEndOneOrTwoPixelsOffAThinPoleReadsThePolesDepthWithTheSearch) {
-  PinholeCamera cam;
-  cam.width = 80;
-  cam.height = 60;
-  cam.fx = cam.fy = 50;
-  cam.cx = 40;
-  cam.cy = 30;
+  const PinholeCamera cam = smallCamera();
   // A static pole 3 px wide at 1.5 m before a wall at 4 m; nothing moves, but the flow at the
   // pole's pixels is 2 px off (a patch-based flow blends the pole into the wall beside it).
   cv::Mat depth(60, 80, CV_32F, cv::Scalar(4.f));
@@ -143,12 +143,7 @@ TEST(SceneFlow, TheSearchAtAFlowsEndWidensByThePointsParallax) {
 }
 
 TEST(SceneFlow, OnOneNoisySurfaceTheFlowEndKeepsItsOwnDepth) {
-  PinholeCamera cam;
-  cam.width = 80;
-  cam.height = 60;
-  cam.fx = cam.fy = 50;
-  cam.cx = 40;
-  cam.cy = 30;
+  const PinholeCamera cam = smallCamera();
   // A walker 4 m away came 9 cm nearer; depth noise 2.6 cm per pixel. The nearest of the 25
   // noisy depths around each end would take back most of the 9 cm: the search must not look.
   std::mt19937 rng(3);
