@@ -22,7 +22,8 @@ double motionDisplacementPx(const CameraVelocity& velocity, double depth_m, doub
   return px;
 }
 
-DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px) {
+DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
+                            double expected_m) {
   DepthRange range;
   if (depth_m.empty()) return range;
   const int u = static_cast<int>(std::lround(pixel.x));
@@ -30,41 +31,19 @@ DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, in
   const int r = std::max(0, radius_px);
   const int x0 = std::max(0, u - r), x1 = std::min(depth_m.cols - 1, u + r);
   const int y0 = std::max(0, v - r), y1 = std::min(depth_m.rows - 1, v + r);
-  float lo = 0.f, hi = 0.f;
+  double nearest_gap = 0.0;
   for (int y = y0; y <= y1; ++y) {
     const float* row = depth_m.ptr<float>(y);
     for (int x = x0; x <= x1; ++x) {
       const float z = row[x];
       if (!validDepth(z)) continue;
-      if (lo == 0.f || z < lo) lo = z;
-      if (z > hi) hi = z;
-    }
-  }
-  range.min_m = lo;
-  range.max_m = hi;
-  return range;
-}
-
-float depthNearestAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
-                         double expected_m) {
-  if (depth_m.empty()) return 0.f;
-  const int u = static_cast<int>(std::lround(pixel.x));
-  const int v = static_cast<int>(std::lround(pixel.y));
-  const int r = std::max(0, radius_px);
-  const int x0 = std::max(0, u - r), x1 = std::min(depth_m.cols - 1, u + r);
-  const int y0 = std::max(0, v - r), y1 = std::min(depth_m.rows - 1, v + r);
-  float best = 0.f;
-  double best_gap = 0.0;
-  for (int y = y0; y <= y1; ++y) {
-    const float* row = depth_m.ptr<float>(y);
-    for (int x = x0; x <= x1; ++x) {
-      const float z = row[x];
-      if (!validDepth(z)) continue;
+      if (range.min_m == 0.f || z < range.min_m) range.min_m = z;
+      if (z > range.max_m) range.max_m = z;
       const double gap = std::abs(double(z) - expected_m);
-      if (best == 0.f || gap < best_gap) best = z, best_gap = gap;
+      if (range.nearest_m == 0.f || gap < nearest_gap) range.nearest_m = z, nearest_gap = gap;
     }
   }
-  return best;
+  return range;
 }
 
 }  // namespace dynanav

@@ -28,15 +28,13 @@ double motionDisplacementPx(const CameraVelocity& velocity, double depth_m, doub
 struct DepthRange {
   float min_m = 0.f;  ///< 0 when no valid depth lies in the window
   float max_m = 0.f;
+  float nearest_m = 0.f;  ///< the valid depth nearest to `expected_m` (0 when none is valid)
 };
 
 /// Smallest and largest valid depth in the (2r+1)² window centred on `pixel` (clipped to the
-/// image); r = 0 reads the pixel itself (rounded, as the keypoint's own depth is read).
-DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px);
-
-/// The valid depth in the (2r+1)² window centred on `pixel` (clipped to the image) nearest to
-/// `expected_m`; 0 when none is valid. r = 0 reads the pixel itself (rounded).
-float depthNearestAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
-                         double expected_m);
+/// image), and the one nearest to `expected_m`, in one pass; r = 0 reads the pixel itself
+/// (rounded, as the keypoint's own depth is read).
+DepthRange depthRangeAround(const cv::Mat& depth_m, const cv::Point2f& pixel, int radius_px,
+                            double expected_m = 0.0);
 
 }  // namespace dynanav

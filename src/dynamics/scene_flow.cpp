@@ -141,13 +141,12 @@ float endDepth(const cv::Mat& cur_depth_m, const cv::Point2f& end, const Vec3& p
                const FlowEndDepth& end_depth, double focal_px) {
   const float own_m = depthAt(cur_depth_m, end.x, end.y);
   if (end_depth.radius_px <= 0) return own_m;
-  CV_Assert(end_depth.config != nullptr);
   const double expected_m = (end_depth.T_cur_prev * p_prev_camera).z();
   const int radius_px = flowEndSearchRadiusPx(end_depth, expected_m, focal_px);
-  const DepthRange range = depthRangeAround(cur_depth_m, end, radius_px);
+  const DepthRange range = depthRangeAround(cur_depth_m, end, radius_px, expected_m);
   const double jump_m = 2.0 * sceneFlowPointThreshold(expected_m, expected_m, *end_depth.config);
   if (!(range.min_m > 0.f) || double(range.max_m - range.min_m) <= jump_m) return own_m;
-  return depthNearestAround(cur_depth_m, end, radius_px, expected_m);
+  return range.nearest_m;
 }
 }  // namespace
 

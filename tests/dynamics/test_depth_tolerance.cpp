@@ -100,10 +100,13 @@ TEST(DepthTolerance, MapPointSigmaFollowsTheSlamsDepthModel) {
 TEST(DepthTolerance, NearestDepthPicksTheWindowsDepthClosestToTheExpectedOne) {
   cv::Mat depth = depthEdge();
   depth.at<float>(100, 321) = 0.f;  // a hole is never picked
-  EXPECT_FLOAT_EQ(depthNearestAround(depth, {321.f, 100.f}, 0, 1.5), 0.f);
-  EXPECT_FLOAT_EQ(depthNearestAround(depth, {321.f, 100.f}, 1, 1.5), 4.0f);  // no cupboard within
-  EXPECT_FLOAT_EQ(depthNearestAround(depth, {321.f, 100.f}, 2, 1.5), 1.5f);
-  EXPECT_FLOAT_EQ(depthNearestAround(depth, {321.f, 100.f}, 2, 3.0), 4.0f);
-  EXPECT_FLOAT_EQ(depthNearestAround(depth, {0.f, 0.f}, 3, 4.0), 1.5f);  // clipped to the image
-  EXPECT_FLOAT_EQ(depthNearestAround(cv::Mat(), {0.f, 0.f}, 3, 4.0), 0.f);
+  const auto nearest = [&](cv::Point2f pixel, int r, double expected) {
+    return depthRangeAround(depth, pixel, r, expected).nearest_m;
+  };
+  EXPECT_FLOAT_EQ(nearest({321.f, 100.f}, 0, 1.5), 0.f);
+  EXPECT_FLOAT_EQ(nearest({321.f, 100.f}, 1, 1.5), 4.0f);  // no cupboard within
+  EXPECT_FLOAT_EQ(nearest({321.f, 100.f}, 2, 1.5), 1.5f);
+  EXPECT_FLOAT_EQ(nearest({321.f, 100.f}, 2, 3.0), 4.0f);
+  EXPECT_FLOAT_EQ(nearest({0.f, 0.f}, 3, 4.0), 1.5f);  // clipped to the image
+  EXPECT_FLOAT_EQ(depthRangeAround(cv::Mat(), {0.f, 0.f}, 3, 4.0).nearest_m, 0.f);
 }
