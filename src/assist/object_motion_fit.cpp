@@ -75,8 +75,12 @@ std::vector<GroundMotion> MotionHistory::update(double stamp_s,
   motions.reserve(objects.size());
   for (const TrackedObject& o : objects) {
     std::deque<Sample>& history = kept[o.id];
-    // A restarted track's earlier centres belong to another extent of it: not its motion.
-    if (auto it = samples_.find(o.id); it != samples_.end() && !o.restarted)
+    // A restarted or reanchored track's earlier centres belong to another extent or part of it:
+    // a line from them to this one is not its motion. (Shifting them by the reanchoring's jump
+    // instead kept the drift of the centres before it: three real-time replays of static
+    // fr1_xyz spoke 5 false urgent warnings that way, 2 with the history restarted,
+    // docs/tracking.md "Session 22".)
+    if (auto it = samples_.find(o.id); it != samples_.end() && !o.restarted && !o.reanchored)
       history = std::move(it->second);
     GroundMotion m = filterMotion(o);
     history.push_back({stamp_s, m.p, m.cov_pp});

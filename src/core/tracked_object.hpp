@@ -43,6 +43,11 @@ struct TrackedObject {
   /// reached from the last one (another extent of it was matched): motion measured over earlier
   /// centres of this id is void.
   bool restarted = false;
+  /// This frame's centre was measured on another part of the object than the last one (cut by
+  /// the image's side or not, a person's trunk found or not, most of it beyond the depth's
+  /// range or not): it placed the estimate without entering its velocity, and earlier centres
+  /// of this id are not comparable with it either.
+  bool reanchored = false;
   std::vector<PathPoint> predicted_path;  ///< empty for static objects
   double visible_share = -1.0;  ///< ground truth only: share of the object in view (< 0: unknown)
 };

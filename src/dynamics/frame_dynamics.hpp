@@ -1,6 +1,7 @@
 #pragma once
 // What the dynamics steps decided for one frame: returned to the pipeline, carried in the
 // FrameResult, summed up by the stats writer (stats.json "dynamics").
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,13 @@ struct FrameDynamics {
   double masked_share = 0.0;         ///< image share cut out of extraction
   std::vector<uint16_t> moving_ids;  ///< this frame's instance ids found moving (ascending)
   std::vector<uint16_t> static_ids;  ///< this frame's prior instance ids scene flow found static
+
+  [[nodiscard]] bool foundMoving(uint16_t id) const {
+    return std::binary_search(moving_ids.begin(), moving_ids.end(), id);
+  }
+  [[nodiscard]] bool foundStatic(uint16_t id) const {
+    return std::binary_search(static_ids.begin(), static_ids.end(), id);
+  }
 };
 
 }  // namespace dynanav

@@ -85,6 +85,18 @@ void KalmanCv::update(const Vec3& p_world, const std::optional<Vec3>& v_world_mp
   correct(centreInnovation(p_world, v_world_mps, position_cov_world));
 }
 
+void KalmanCv::reanchor(const Vec3& p_world, double part_offset_sigma_m,
+                        const std::optional<Mat3>& position_cov_world) {
+  P_.topRightCorner<3, 3>().setZero();
+  P_.bottomLeftCorner<3, 3>().setZero();
+  P_.topLeftCorner<3, 3>() += Mat3::Identity() * part_offset_sigma_m * part_offset_sigma_m;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, 6);
+  H.leftCols(3) = Eigen::MatrixXd::Identity(3, 3);
+  const Mat3 R = position_cov_world.value_or(Mat3::Identity() * noise_.position_sigma_m *
+                                             noise_.position_sigma_m);
+  correct(innovation(std::move(H), p_world, R));
+}
+
 void KalmanCv::updateVelocity(const Vec3& v_world_mps) {
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, 6);
   H.rightCols(3) = Eigen::MatrixXd::Identity(3, 3);

@@ -5,33 +5,18 @@
 #include <cmath>
 #include <tuple>
 
-#include "core/median.hpp"
 #include "dynamics/height_range.hpp"
-#include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_motion.hpp"
 #include "dynamics/object_points.hpp"
 
 namespace dynanav {
 namespace {
 
-bool contains(const std::vector<uint16_t>& sorted_ids, uint16_t id) {
-  return std::binary_search(sorted_ids.begin(), sorted_ids.end(), id);
-}
-
 uint16_t labelAt(const cv::Mat& labels, const Eigen::Vector2d& pixel) {
   const int x = int(std::lround(pixel.x())), y = int(std::lround(pixel.y()));
   if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return 0;
   return labels.at<uint16_t>(y, x);
 }
-
-/// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
-constexpr double kInitialVelocitySigmaMps = 1.0;
-
-/// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
-/// innovation beyond it is not what the filter's covariance allows.
-constexpr double kChiSquare3Dof999 = 16.27;
-/// The same with 6 degrees of freedom (position and velocity).
-constexpr double kChiSquare6Dof999 = 22.46;
 
 }  // namespace
 
@@ -163,6 +148,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   track.instance = instance ? instance->id : 0;
   track.inliers = 0;
   track.restarted = false;
+  track.reanchored = false;
   if (dt > 0.0) track.filter.predict(dt);
   if (!input.tracked) {  // no camera pose: no world points; the filter coasts
     track.pixels.clear();
@@ -209,6 +195,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const ObjectSample sample = samplePixels(*instance, input);
     lift(track, sample.pixels, input);
     track.trunk = sample.trunk;
+    track.cut_side = instanceCutSide(*instance, input.instances.labels.cols);
   } else {
     lift(track, kept_pixels, input);
     // The voters stay voters while the object is unseen: without a mask nothing says a pixel
@@ -253,7 +240,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       track.filter = KalmanCv(p_world, filterNoise(), cov_world);
       track.restarted = true;
     } else if (!track.prior_dynamic && track.stationary && instance &&
-               contains(input.dynamics.moving_ids, instance->id)) {
+               input.dynamics.foundMoving(instance->id)) {
       // An object held still (its velocity clamped at zero, an assumption rather than a
       // measurement) that the dynamics stage now finds moving has an unknown velocity again: the
       // filter is told so, and the rigid motion measures it in a frame or two instead of a ramp
@@ -263,6 +250,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       // (People set off on their points instead: session 10's rule.)
       track.filter.reopen(kUnmeasuredSigmaM, kInitialVelocitySigmaMps);
     }
+    bool handed_over = false;  // from the height range to depth, this frame (below)
     if (centre->scale_sigma > 0.0 && track.ranged_scale_sigma <= 0.0) {
       // Depth placed this person before (the filter is metric) and now it is beyond the range:
       // the stature's error is new to the filter. It enters every frame as if independent
@@ -284,6 +272,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
           Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
       track.filter.addCovariance(Q);
       track.ranged_scale_sigma = 0.0;
+      handed_over = true;
       // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
       // feet: eroded 5 px, one read 35 m at 11 m): then the filter starts afresh at the depth.
       // (Ranges whose rate no walker has were withdrawn while they came: below.)
@@ -305,7 +294,29 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const bool gated_out = !instance && config_.gate_missed &&
                            track.filter.normalisedInnovation(p_world, v_used, cov_world) >
                                (v_used ? kChiSquare6Dof999 : kChiSquare3Dof999);
-    if (!track.restarted && !gated_out) track.filter.update(p_world, v_used, cov_world);
+    // A centre measured on another part of the object than the last one (the image's side now
+    // cuts it or no longer does; a person's trunk found or lost; most of it beyond the depth's
+    // range or no longer) differs from it by the two parts' offset, which is not motion: static
+    // fr1_xyz in real time, a false "person" on an oblique desk moved 0.16-0.21 m toward the camera
+    // as its sample switched from the trunk band to the whole mask, and an urgent "approaching"
+    // warning followed (docs/tracking.md "Session 22"). Such a centre places the object (a
+    // position-only update); the velocity keeps what the points' rigid motion measures. Not where
+    // the height range hands over to depth: that hand-over judges the two above.
+    const Track::CentreRule rule{track.cut_side, track.trunk,
+                                 instance ? track.depth_share < config_.min_depth_share
+                                          : track.centre_rule && track.centre_rule->little_depth};
+    const bool reanchor = config_.reanchor_on_rule_change && track.centre_rule &&
+                          !(*track.centre_rule == rule) && !handed_over;
+    track.centre_rule = rule;
+    if (!track.restarted && !gated_out) {
+      if (reanchor) {
+        track.filter.reanchor(p_world, kUnmeasuredSigmaM, cov_world);
+        if (v_used) track.filter.updateVelocity(*v_used);
+        track.reanchored = true;
+      } else {
+        track.filter.update(p_world, v_used, cov_world);
+      }
+    }
   } else {
     track.whole_centre_frames = 0;
   }
@@ -317,7 +328,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   if (floor_ && config_.vertical_speed_sigma_mps > 0.0)
     track.filter.updateVelocityAlong(input.T_world_camera.linear() * floor_->normal_camera, 0.0,
                                      config_.vertical_speed_sigma_mps);
-  const bool verified_static = instance && contains(input.dynamics.static_ids, instance->id);
+  const bool verified_static = instance && input.dynamics.foundStatic(instance->id);
   const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
   if (ranged_centre && beyondWalkersSpeed(track.filter.velocity())) {
     // The ranges rush (or recede) faster than a walker can: the mask's height changes for
@@ -342,7 +353,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
   // Moving or not: the dynamics verdicts of the instance (a carried object keeps its state).
   if (instance) {
-    const bool moving = contains(input.dynamics.moving_ids, instance->id);
+    const bool moving = input.dynamics.foundMoving(instance->id);
     track.still = moving ? 0 : track.still + 1;
   } else if (!track.prior_dynamic) {
     // Missed by the segmenter and carried by its flow points: no evidence that it moves, which
@@ -411,81 +422,6 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // When it sets off again its velocity starts afresh: the rigid motion measures it first.
     track.whole_centre_frames = 0;
   }
-}
-
-ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) const {
-  ObjectMotionOptions options;
-  options.ransac_iterations = config_.ransac_iterations;
-  options.reprojection_px = config_.ransac_reprojection_px;
-  options.huber_px = config_.refine_huber_px;
-  options.refine_iterations = config_.refine_iterations;
-  options.min_points = config_.min_motion_points;
-  options.seed = uint64_t(frame_index) * 7919u + id;  // same run, same answer
-  return options;
-}
-
-KalmanCvNoise ObjectTracker::filterNoise() const {
-  return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
-          kInitialVelocitySigmaMps};
-}
-
-bool ObjectTracker::beyondWalkersSpeed(const Vec3& v_world_mps) {
-  return v_world_mps.squaredNorm() >
-         kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
-}
-
-bool ObjectTracker::filterVelocityKnown(const Track& track) const {
-  return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
-}
-
-std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
-                                                         const ObjectTrackerInput& input) {
-  if (!input.tracked) return std::nullopt;
-  Track t;
-  t.class_name = instance.class_name;
-  t.instance = instance.id;
-  t.last_stamp_s = input.stamp_s;
-  const ObjectSample sample = samplePixels(instance, input);
-  lift(t, sample.pixels, input);
-  t.trunk = sample.trunk;
-  const SE3 T_camera_world = input.T_world_camera.inverse();
-  std::vector<Vec3> p_camera;
-  for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
-  const auto centre = measureCentre(t, p_camera, &instance, input);
-  if (!centre) return std::nullopt;
-  t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
-  t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
-  t.ranged_scale_sigma = centre->scale_sigma;
-  const bool moving = contains(input.dynamics.moving_ids, instance.id);
-  // Placed by its height: no verdict to go by (update's static rule for such tracks).
-  t.still = moving || t.ranged_scale_sigma > 0.0 ? 0 : 1;
-  // A person is taken as moving until found still; a chair as static until found moving.
-  if (contains(input.dynamics.static_ids, instance.id) || (!t.prior_dynamic && !moving))
-    t.still = config_.static_after_frames;
-  t.stationary = t.still >= config_.static_after_frames;
-  t.id = next_id_++;
-  // Moving from its first frame (not placed by its height): its motion since the previous
-  // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). One
-  // entering at the image's side measures only its velocity across the line of sight: the
-  // sliver in view reads motion along it badly (the simulated crossing's walker read 2.5 m/s
-  // toward the camera, walking across it at 1.4). Later frames' motion enters whole: by then
-  // the filter knows the velocity along the ray from the centres, and leaving that component
-  // out of a cut walker's every frame was worse (docs/tracking.md "Session 17").
-  const bool cut = instanceCutSide(instance, input.instances.labels.cols) != 0;
-  if (!t.stationary && t.ranged_scale_sigma <= 0.0 && (!cut || config_.first_motion_cut_across_ray))
-    if (const auto first = firstFrameMotion(
-            {instance, input.instances.labels, input.flow_half, input.depth_m, input.T_world_camera,
-             input.stamp_s, input.camera, previous_, sample_step_px_, config_.depth_band_m},
-            motionOptions(input.frame_index, t.id))) {
-      if (cut)
-        t.filter.updateVelocityAcross(first->v_world_mps,
-                                      t.filter.position() - input.T_world_camera.translation());
-      else
-        t.filter.updateVelocity(first->v_world_mps);
-      t.motion = first->H_world;
-      t.inliers = first->inliers;
-    }
-  return t;
 }
 
 }  // namespace dynanav

@@ -58,8 +58,11 @@ class ObjectTracker {
     // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
     // flow only to vote in the association, so such a track survives a missed frame.
     std::vector<cv::Point2f> voters;
-    uint16_t instance = 0;     // label in the last frame (0: carried)
-    bool trunk = false;        // the points are a person's trunk
+    uint16_t instance = 0;  // label in the last frame (0: carried)
+    bool trunk = false;     // the points are a person's trunk
+    // Side of the image (-1 left, +1 right, 0 none) that cut the object when the segmenter last
+    // saw it: carried points are that frame's sample, so its centre stays as partial.
+    int cut_side = 0;
     double depth_share = 1.0;  // share of the sampled mask pixels with usable depth
     KalmanCv filter;
     SE3 motion = SE3::Identity();  // last frame's rigid motion (the next frame's prior)
@@ -78,7 +81,17 @@ class ObjectTracker {
     // 99.9 %): the mask's height is not the person's (a far mask losing head and feet to
     // erosion), so no more ranges for it until depth places it.
     bool ranges_refuted = false;
-    bool restarted = false;  // the filter started afresh this frame at a centre it could not reach
+    // Which part of the object the last centre measured (object_tracker.cpp, reanchoring); none:
+    // no centre yet.
+    struct CentreRule {
+      int cut_side = 0;
+      bool trunk = false;
+      bool little_depth = false;  // most of its sample without usable depth
+      bool operator==(const CentreRule&) const = default;
+    };
+    std::optional<CentreRule> centre_rule;
+    bool reanchored = false;  // TrackedObject::reanchored, this frame
+    bool restarted = false;   // the filter started afresh this frame at a centre it could not reach
     double last_stamp_s = 0.0;
   };
   struct Carried {  // one track's points carried into this frame
@@ -123,6 +136,13 @@ class ObjectTracker {
   /// Noise (m) of a centre component the visible part does not measure (an object cut by the
   /// image's side: sideways; a person without the trunk in view: the height): a body's size.
   static constexpr double kUnmeasuredSigmaM = 1.0;
+  /// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
+  static constexpr double kInitialVelocitySigmaMps = 1.0;
+  /// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
+  /// innovation beyond it is not what the filter's covariance allows.
+  static constexpr double kChiSquare3Dof999 = 16.27;
+  /// The same with 6 degrees of freedom (position and velocity).
+  static constexpr double kChiSquare6Dof999 = 22.46;
 
   ObjectTrackingConfig config_;
   int sample_step_px_ = 5;

@@ -92,8 +92,12 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
   // of the mask has no usable depth (a walker entering the sensor's range shows depth on the
   // nearest limb first: its centre sits beside and in front of the body's, and would move at
   // a walking speed sideways while the rest comes into range).
-  const bool cut = instance && instanceCutSide(*instance, input.instances.labels.cols) != 0;
-  const bool no_trunk = instance && track.class_name == "person" && !track.trunk;
+  // Carried points (the segmenter missed the object) are the last seen frame's sample: its
+  // centre is as partial as that frame's was (cut, no trunk), or a carried centre would claim
+  // to measure what the seen one could not (static fr1_xyz in real time: a carried false
+  // "person" read the height it had not measured, a 0.16 m jump, docs/tracking.md "Session 22").
+  const bool cut = track.cut_side != 0;
+  const bool no_trunk = track.class_name == "person" && !track.trunk;
   if (!cut && !no_trunk && !little_depth) return Centre{*centre, std::nullopt, 0.0, true};
   const double s2 = config_.position_sigma_m * config_.position_sigma_m;
   const double u2 = kUnmeasuredSigmaM * kUnmeasuredSigmaM;

@@ -29,6 +29,7 @@ TrackedObject ObjectTracker::report(const Track& t, const ObjectTrackerInput& in
   o.missed_frames = t.missed;
   o.motion_inliers = t.inliers;
   o.restarted = t.restarted;
+  o.reanchored = t.reanchored;
   if (!t.stationary) {
     o.predicted_path = t.filter.predictPath(config_.path_horizon_s, config_.path_step_s);
     // The stature's error along the predicted ray (an upper bound of the largest eigenvalue).

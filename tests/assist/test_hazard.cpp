@@ -269,6 +269,32 @@ TEST(MotionFit, CentresAPartialViewCouldNotPlaceBarelyPullTheLine) {
   EXPECT_LT(std::sqrt(weighted.cov_vv(1, 1)), 0.2);
 }
 
+TEST(MotionHistory, AReanchoredTrackForgetsTheCentresOfItsOtherPart) {
+  // A still person whose trunk is lost: its centre moves 0.25 m nearer, to the whole mask's.
+  // The tracker says so (reanchored); the line through the earlier centres would read an
+  // approach.
+  for (const bool told : {true, false}) {
+    MotionHistory history{AssistConfig{}};
+    std::vector<GroundMotion> motion;
+    for (int i = 0; i < 18; ++i) {
+      TrackedObject person;
+      person.id = 4;
+      person.class_name = "person";
+      person.dynamic = true;
+      person.p_world = Vec3(0.0, 0.0, i < 15 ? 2.0 : 1.75);
+      person.covariance.topLeftCorner<3, 3>() = Mat3::Identity() * 4e-4;
+      person.covariance.bottomRightCorner<3, 3>() = Mat3::Identity() * 0.01;
+      person.reanchored = told && i == 15;
+      motion = history.update(i / 30.0, {person});
+    }
+    ASSERT_EQ(motion.size(), 1u);
+    if (told)
+      EXPECT_LT(motion[0].v.norm(), 0.05);
+    else
+      EXPECT_LT(motion[0].v.y(), -0.3);
+  }
+}
+
 TEST(MotionHistory, ARestartedTrackForgetsTheCentresOfItsOtherExtent) {
   // A chair reported moving (falsely) stands at 2.5 m for 15 frames; its segment then takes in a
   // neighbour and its centre jumps 0.5 m nearer. Told that the tracker restarted it there, the

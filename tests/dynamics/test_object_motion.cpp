@@ -144,6 +144,34 @@ TEST(KalmanCv, PositionOnlyUpdatesInferVelocity) {
   EXPECT_NEAR(filter.velocity().x(), 0.8, 0.05);
 }
 
+TEST(KalmanCv, ReanchoringPlacesThePositionWithoutTouchingTheVelocity) {
+  // Walking at 1 m/s along x, its velocity known; then a centre 0.3 m off measured on another
+  // part of it. An update reads the offset as a change of speed; a reanchoring moves the
+  // position to the new part and leaves the velocity and its variance as they were, also in the
+  // frames after it (the offset must not leak in through the position-velocity correlation).
+  const double dt = 1.0 / 30.0;
+  KalmanCv walked(Vec3::Zero(), {});
+  for (int k = 1; k <= 60; ++k) {
+    walked.predict(dt);
+    walked.update(Vec3(k * dt, 0, 0), Vec3(1, 0, 0));
+  }
+  KalmanCv updated = walked, reanchored = walked;
+  for (KalmanCv* f : {&updated, &reanchored}) f->predict(dt);
+  const Mat3 velocity_cov = reanchored.covariance().bottomRightCorner<3, 3>();
+  const Vec3 offset_part(61 * dt + 0.3, 0, 0);
+  updated.update(offset_part, std::nullopt);
+  reanchored.reanchor(offset_part, 1.0);
+  EXPECT_GT(updated.velocity().x(), 1.5);
+  EXPECT_NEAR(reanchored.velocity().x(), 1.0, 0.02);
+  EXPECT_NEAR(reanchored.position().x(), offset_part.x(), 0.01);
+  EXPECT_LT((reanchored.covariance().bottomRightCorner<3, 3>() - velocity_cov).norm(), 1e-12);
+  for (int k = 62; k <= 70; ++k) {
+    reanchored.predict(dt);
+    reanchored.update(Vec3(k * dt + 0.3, 0, 0), std::nullopt);
+  }
+  EXPECT_NEAR(reanchored.velocity().x(), 1.0, 0.05);
+}
+
 TEST(KalmanCv, NormalisedInnovationIsTheMeasurementsMahalanobisDistance) {
   // A new filter at the origin: position variance 0.05^2, velocity 1^2 per axis; the
   // measurement noises are 0.05 m and 0.6 m/s. A centre 0.1 m off along x: 0.1^2 / (2 * 0.05^2)

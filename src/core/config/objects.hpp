@@ -13,6 +13,7 @@ struct ObjectTrackingConfig {
   int max_missed_frames = 15;
   bool gate_missed = true;
   bool restart_beyond_gate = true;
+  bool reanchor_on_rule_change = true;
   bool first_frame_motion = true;
   bool first_motion_cut_across_ray = true;
   int centre_min_points = 8;
@@ -58,6 +59,11 @@ struct ObjectTrackingConfig {
       "lies outside the filter's 99.9 % chi-square gate shows another extent of itself (a "
       "segment merged with or split from a neighbour's), not motion: the filter starts afresh "
       "there, its velocity unknown, and earlier centres no longer give its motion");
+    v("reanchor_on_rule_change", reanchor_on_rule_change,
+      "when an object's centre is measured by another rule than in its last frame (cut by the "
+      "image's side or not, a person's trunk found or not), the two centres are of different "
+      "parts of it: this frame's centre places it (a position-only update) but does not enter "
+      "its velocity, and earlier centres are shifted with it (docs/tracking.md 'Session 22')");
     v("first_frame_motion", first_frame_motion,
       "a new moving track's velocity is measured in its first frame, from the previous frame's "
       "points the flow carries onto its mask (else it starts at its prior, 0 +- 1 m/s)");

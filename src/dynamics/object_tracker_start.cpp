@@ -1,0 +1,87 @@
+#include "dynamics/object_tracker.hpp"
+
+// A new track (its first centre, filter and motion) and the settings every track's filter and
+// rigid motion use (object_tracker.cpp updates the tracks).
+#include "dynamics/keypoint_dynamics.hpp"
+#include "dynamics/object_points.hpp"
+
+namespace dynanav {
+
+ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) const {
+  ObjectMotionOptions options;
+  options.ransac_iterations = config_.ransac_iterations;
+  options.reprojection_px = config_.ransac_reprojection_px;
+  options.huber_px = config_.refine_huber_px;
+  options.refine_iterations = config_.refine_iterations;
+  options.min_points = config_.min_motion_points;
+  options.seed = uint64_t(frame_index) * 7919u + id;  // same run, same answer
+  return options;
+}
+
+KalmanCvNoise ObjectTracker::filterNoise() const {
+  return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
+          kInitialVelocitySigmaMps};
+}
+
+bool ObjectTracker::beyondWalkersSpeed(const Vec3& v_world_mps) {
+  return v_world_mps.squaredNorm() >
+         kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
+}
+
+bool ObjectTracker::filterVelocityKnown(const Track& track) const {
+  return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
+}
+
+std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
+                                                         const ObjectTrackerInput& input) {
+  if (!input.tracked) return std::nullopt;
+  Track t;
+  t.class_name = instance.class_name;
+  t.instance = instance.id;
+  t.last_stamp_s = input.stamp_s;
+  const ObjectSample sample = samplePixels(instance, input);
+  lift(t, sample.pixels, input);
+  t.trunk = sample.trunk;
+  t.cut_side = instanceCutSide(instance, input.instances.labels.cols);
+  const SE3 T_camera_world = input.T_world_camera.inverse();
+  std::vector<Vec3> p_camera;
+  for (const Vec3& p : t.p_world) p_camera.push_back(T_camera_world * p);
+  const auto centre = measureCentre(t, p_camera, &instance, input);
+  if (!centre) return std::nullopt;
+  t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
+  t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
+  t.centre_rule = Track::CentreRule{t.cut_side, t.trunk, t.depth_share < config_.min_depth_share};
+  t.ranged_scale_sigma = centre->scale_sigma;
+  const bool moving = input.dynamics.foundMoving(instance.id);
+  // Placed by its height: no verdict to go by (update's static rule for such tracks).
+  t.still = moving || t.ranged_scale_sigma > 0.0 ? 0 : 1;
+  // A person is taken as moving until found still; a chair as static until found moving.
+  if (input.dynamics.foundStatic(instance.id) || (!t.prior_dynamic && !moving))
+    t.still = config_.static_after_frames;
+  t.stationary = t.still >= config_.static_after_frames;
+  t.id = next_id_++;
+  // Moving from its first frame (not placed by its height): its motion since the previous
+  // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). One
+  // entering at the image's side measures only its velocity across the line of sight: the
+  // sliver in view reads motion along it badly (the simulated crossing's walker read 2.5 m/s
+  // toward the camera, walking across it at 1.4). Later frames' motion enters whole: by then
+  // the filter knows the velocity along the ray from the centres, and leaving that component
+  // out of a cut walker's every frame was worse (docs/tracking.md "Session 17").
+  const bool cut = t.cut_side != 0;
+  if (!t.stationary && t.ranged_scale_sigma <= 0.0 && (!cut || config_.first_motion_cut_across_ray))
+    if (const auto first = firstFrameMotion(
+            {instance, input.instances.labels, input.flow_half, input.depth_m, input.T_world_camera,
+             input.stamp_s, input.camera, previous_, sample_step_px_, config_.depth_band_m},
+            motionOptions(input.frame_index, t.id))) {
+      if (cut)
+        t.filter.updateVelocityAcross(first->v_world_mps,
+                                      t.filter.position() - input.T_world_camera.translation());
+      else
+        t.filter.updateVelocity(first->v_world_mps);
+      t.motion = first->H_world;
+      t.inliers = first->inliers;
+    }
+  return t;
+}
+
+}  // namespace dynanav
