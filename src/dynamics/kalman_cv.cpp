@@ -89,7 +89,19 @@ void KalmanCv::reanchor(const Vec3& p_world, double part_offset_sigma_m,
                         const std::optional<Mat3>& position_cov_world) {
   P_.topRightCorner<3, 3>().setZero();
   P_.bottomLeftCorner<3, 3>().setZero();
-  P_.topLeftCorner<3, 3>() += Mat3::Identity() * part_offset_sigma_m * part_offset_sigma_m;
+  // The offset is opened along the directions the new centre measures; along one it leaves
+  // unknown (a side cut by the image's edge) the predicted position stays the better estimate.
+  const double offset_var = part_offset_sigma_m * part_offset_sigma_m;
+  Mat3 opened = Mat3::Identity() * offset_var;
+  if (position_cov_world) {
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(
+        0.5 * (*position_cov_world + position_cov_world->transpose()));
+    opened.setZero();
+    for (int k = 0; k < 3; ++k)
+      if (eig.eigenvalues()(k) < 0.25 * offset_var)
+        opened += offset_var * eig.eigenvectors().col(k) * eig.eigenvectors().col(k).transpose();
+  }
+  P_.topLeftCorner<3, 3>() += opened;
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, 6);
   H.leftCols(3) = Eigen::MatrixXd::Identity(3, 3);
   const Mat3 R = position_cov_world.value_or(Mat3::Identity() * noise_.position_sigma_m *

@@ -38,9 +38,10 @@ class KalmanCv {
               const std::optional<Mat3>& position_cov_world = std::nullopt);
   /// A centre that places the object but whose difference from the earlier ones is not motion (it
   /// was measured on another part of the object, up to `part_offset_sigma_m` from the last): the
-  /// position's variance grows by that offset's and the position alone is updated; the velocity
-  /// and its covariance stay (their correlation with the position is dropped first, so neither
-  /// the offset nor the innovation leaks into the velocity, now or in the next frames).
+  /// position's variance grows by that offset's along the directions the centre measures (those
+  /// `position_cov_world` leaves within half the offset) and the position alone is updated; the
+  /// velocity and its covariance stay (their correlation with the position is dropped first, so
+  /// neither the offset nor the innovation leaks into the velocity, now or in the next frames).
   void reanchor(const Vec3& p_world, double part_offset_sigma_m,
                 const std::optional<Mat3>& position_cov_world = std::nullopt);
   /// A velocity measurement alone (with the configured one-frame velocity noise).

@@ -304,9 +304,11 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // the height range hands over to depth: that hand-over judges the two above.
     const Track::CentreRule rule{track.cut_side, track.trunk,
                                  instance ? track.depth_share < config_.min_depth_share
-                                          : track.centre_rule && track.centre_rule->little_depth};
+                                          : track.centre_rule && track.centre_rule->little_depth,
+                                 ranged_centre};
     const bool reanchor = config_.reanchor_on_rule_change && track.centre_rule &&
-                          !(*track.centre_rule == rule) && !handed_over;
+                          !(*track.centre_rule == rule) && !rule.ranged &&
+                          !track.centre_rule->ranged && !handed_over;
     track.centre_rule = rule;
     if (!track.restarted && !gated_out) {
       if (reanchor) {

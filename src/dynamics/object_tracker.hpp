@@ -87,6 +87,7 @@ class ObjectTracker {
       int cut_side = 0;
       bool trunk = false;
       bool little_depth = false;  // most of its sample without usable depth
+      bool ranged = false;        // placed by its height (height_range.hpp): the whole person
       bool operator==(const CentreRule&) const = default;
     };
     std::optional<CentreRule> centre_rule;

@@ -50,7 +50,8 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   if (!centre) return std::nullopt;
   t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
   t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
-  t.centre_rule = Track::CentreRule{t.cut_side, t.trunk, t.depth_share < config_.min_depth_share};
+  t.centre_rule = Track::CentreRule{
+      t.cut_side, t.trunk, t.depth_share<config_.min_depth_share, centre->scale_sigma> 0.0};
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = input.dynamics.foundMoving(instance.id);
   // Placed by its height: no verdict to go by (update's static rule for such tracks).

@@ -170,6 +170,14 @@ TEST(KalmanCv, ReanchoringPlacesThePositionWithoutTouchingTheVelocity) {
     reanchored.update(Vec3(k * dt + 0.3, 0, 0), std::nullopt);
   }
   EXPECT_NEAR(reanchored.velocity().x(), 1.0, 0.05);
+  // A new centre that leaves its sideways position unknown (cut by the image's side, 1 m) opens
+  // only what it measures: the predicted x stays, the depth goes to the new part's.
+  KalmanCv cut = walked;
+  cut.predict(dt);
+  const double x_predicted = cut.position().x();
+  cut.reanchor(Vec3(x_predicted + 0.5, 0, 0.3), 1.0, Vec3(1.0, 0.0025, 0.0025).asDiagonal());
+  EXPECT_NEAR(cut.position().x(), x_predicted, 0.01);
+  EXPECT_NEAR(cut.position().z(), 0.3, 0.01);
 }
 
 TEST(KalmanCv, NormalisedInnovationIsTheMeasurementsMahalanobisDistance) {
