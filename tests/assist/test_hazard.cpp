@@ -269,56 +269,45 @@ TEST(MotionFit, CentresAPartialViewCouldNotPlaceBarelyPullTheLine) {
   EXPECT_LT(std::sqrt(weighted.cov_vv(1, 1)), 0.2);
 }
 
+/// The motion history of an object reported moving that stands at z_before for 15 frames, then at
+/// z_after (its centre measured on another extent or part of it) for 3: told so in the frame of
+/// the jump by `tell` (setting TrackedObject::restarted or ::reanchored), or not told.
+GroundMotion motionAfterAJump(const std::string& class_name, double z_before, double z_after,
+                              void (*tell)(TrackedObject&)) {
+  MotionHistory history{AssistConfig{}};
+  std::vector<GroundMotion> motion;
+  for (int i = 0; i < 18; ++i) {
+    TrackedObject o;
+    o.id = 7;
+    o.class_name = class_name;
+    o.dynamic = true;
+    o.p_world = Vec3(0.0, 0.0, i < 15 ? z_before : z_after);
+    o.covariance.topLeftCorner<3, 3>() = Mat3::Identity() * 4e-4;
+    o.covariance.bottomRightCorner<3, 3>() = Mat3::Identity() * 0.01;
+    if (tell && i == 15) tell(o);
+    motion = history.update(i / 30.0, {o});
+  }
+  EXPECT_EQ(motion.size(), 1u);
+  return motion.empty() ? GroundMotion{} : motion[0];
+}
+
 TEST(MotionHistory, AReanchoredTrackForgetsTheCentresOfItsOtherPart) {
   // A still person whose trunk is lost: its centre moves 0.25 m nearer, to the whole mask's.
-  // The tracker says so (reanchored); the line through the earlier centres would read an
-  // approach.
-  for (const bool told : {true, false}) {
-    MotionHistory history{AssistConfig{}};
-    std::vector<GroundMotion> motion;
-    for (int i = 0; i < 18; ++i) {
-      TrackedObject person;
-      person.id = 4;
-      person.class_name = "person";
-      person.dynamic = true;
-      person.p_world = Vec3(0.0, 0.0, i < 15 ? 2.0 : 1.75);
-      person.covariance.topLeftCorner<3, 3>() = Mat3::Identity() * 4e-4;
-      person.covariance.bottomRightCorner<3, 3>() = Mat3::Identity() * 0.01;
-      person.reanchored = told && i == 15;
-      motion = history.update(i / 30.0, {person});
-    }
-    ASSERT_EQ(motion.size(), 1u);
-    if (told)
-      EXPECT_LT(motion[0].v.norm(), 0.05);
-    else
-      EXPECT_LT(motion[0].v.y(), -0.3);
-  }
+  // Told that the tracker reanchored it there, the motion is the tracker's (standing); not told,
+  // the line through the earlier centres reads an approach.
+  const auto reanchor = [](TrackedObject& o) { o.reanchored = true; };
+  EXPECT_LT(motionAfterAJump("person", 2.0, 1.75, reanchor).v.norm(), 0.05);
+  EXPECT_LT(motionAfterAJump("person", 2.0, 1.75, nullptr).v.y(), -0.3);
 }
 
 TEST(MotionHistory, ARestartedTrackForgetsTheCentresOfItsOtherExtent) {
   // A chair reported moving (falsely) stands at 2.5 m for 15 frames; its segment then takes in a
   // neighbour and its centre jumps 0.5 m nearer. Told that the tracker restarted it there, the
   // motion is the tracker's (standing); not told, the line through the jump reads an approach.
-  for (const bool told : {true, false}) {
-    MotionHistory history{AssistConfig{}};
-    std::vector<GroundMotion> motion;
-    for (int i = 0; i < 18; ++i) {
-      TrackedObject chair;
-      chair.id = 7;
-      chair.class_name = "chair";
-      chair.dynamic = true;
-      chair.p_world = Vec3(0.0, 0.0, i < 15 ? 2.5 : 2.0);
-      chair.covariance.topLeftCorner<3, 3>() = Mat3::Identity() * 4e-4;
-      chair.covariance.bottomRightCorner<3, 3>() = Mat3::Identity() * 0.01;
-      chair.restarted = told && i == 15;
-      motion = history.update(i / 30.0, {chair});
-    }
-    ASSERT_EQ(motion.size(), 1u);
-    if (told)
-      EXPECT_LT(motion[0].v.norm(), 0.05);
-    else
-      EXPECT_LT(motion[0].v.y(), -0.5);  // toward the wearer (world -z): 0.7 m/s
-  }
+  const auto restart = [](TrackedObject& o) { o.restarted = true; };
+  EXPECT_LT(motionAfterAJump("chair", 2.5, 2.0, restart).v.norm(), 0.05);
+  // Toward the wearer (world -z): 0.7 m/s.
+  EXPECT_LT(motionAfterAJump("chair", 2.5, 2.0, nullptr).v.y(), -0.5);
 }
 
 }  // namespace
