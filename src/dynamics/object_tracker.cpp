@@ -250,7 +250,6 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       // (People set off on their points instead: session 10's rule.)
       track.filter.reopen(kUnmeasuredSigmaM, kInitialVelocitySigmaMps);
     }
-    bool handed_over = false;  // from the height range to depth, this frame (below)
     if (centre->scale_sigma > 0.0 && track.ranged_scale_sigma <= 0.0) {
       // Depth placed this person before (the filter is metric) and now it is beyond the range:
       // the stature's error is new to the filter. It enters every frame as if independent
@@ -272,7 +271,6 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
           Mat3::Identity() * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
       track.filter.addCovariance(Q);
       track.ranged_scale_sigma = 0.0;
-      handed_over = true;
       // Unless the depth says the ranges were wrong in more than scale (a mask that lost head and
       // feet: eroded 5 px, one read 35 m at 11 m): then the filter starts afresh at the depth.
       // (Ranges whose rate no walker has were withdrawn while they came: below.)
@@ -300,15 +298,13 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // fr1_xyz in real time, a false "person" on an oblique desk moved 0.16-0.21 m toward the camera
     // as its sample switched from the trunk band to the whole mask, and an urgent "approaching"
     // warning followed (docs/tracking.md "Session 22"). Such a centre places the object (a
-    // position-only update); the velocity keeps what the points' rigid motion measures. Not where
-    // the height range hands over to depth: that hand-over judges the two above.
-    const Track::CentreRule rule{track.cut_side, track.trunk,
-                                 instance ? track.depth_share < config_.min_depth_share
-                                          : track.centre_rule && track.centre_rule->little_depth,
-                                 ranged_centre};
+    // position-only update); the velocity keeps what the points' rigid motion measures. Not for
+    // centres placed by the height range (they measure the whole person whatever was sampled;
+    // their hand-over to depth is judged above).
+    const Track::CentreRule rule = centreRule(track, instance != nullptr, ranged_centre);
     const bool reanchor = config_.reanchor_on_rule_change && track.centre_rule &&
                           !(*track.centre_rule == rule) && !rule.ranged &&
-                          !track.centre_rule->ranged && !handed_over;
+                          !track.centre_rule->ranged;
     track.centre_rule = rule;
     if (!track.restarted && !gated_out) {
       if (reanchor) {

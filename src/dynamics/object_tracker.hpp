@@ -105,6 +105,9 @@ class ObjectTracker {
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  /// Which part of the object this frame's centre measures (`seen`: the segmenter saw it;
+  /// `ranged`: placed by the height range).
+  [[nodiscard]] Track::CentreRule centreRule(const Track& track, bool seen, bool ranged) const;
   /// The filter's velocity has been narrowed from its prior (0 +- 1 m/s) by measurements.
   [[nodiscard]] bool filterVelocityKnown(const Track& track) const;
   /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.

@@ -28,6 +28,14 @@ bool ObjectTracker::beyondWalkersSpeed(const Vec3& v_world_mps) {
          kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
 }
 
+ObjectTracker::Track::CentreRule ObjectTracker::centreRule(const Track& track, bool seen,
+                                                           bool ranged) const {
+  // Carried points are the last seen frame's sample: they keep its share of depth.
+  const bool little_depth = seen ? track.depth_share < config_.min_depth_share
+                                 : track.centre_rule && track.centre_rule->little_depth;
+  return {track.cut_side, track.trunk, little_depth, ranged};
+}
+
 bool ObjectTracker::filterVelocityKnown(const Track& track) const {
   return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
 }
@@ -50,8 +58,7 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   if (!centre) return std::nullopt;
   t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
   t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
-  t.centre_rule = Track::CentreRule{
-      t.cut_side, t.trunk, t.depth_share<config_.min_depth_share, centre->scale_sigma> 0.0};
+  t.centre_rule = centreRule(t, true, centre->scale_sigma > 0.0);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = input.dynamics.foundMoving(instance.id);
   // Placed by its height: no verdict to go by (update's static rule for such tracks).

@@ -61,9 +61,11 @@ struct ObjectTrackingConfig {
       "there, its velocity unknown, and earlier centres no longer give its motion");
     v("reanchor_on_rule_change", reanchor_on_rule_change,
       "when an object's centre is measured by another rule than in its last frame (cut by the "
-      "image's side or not, a person's trunk found or not), the two centres are of different "
+      "image's side or not, a person's trunk found or not, most of it beyond the depth's range "
+      "or not; not for centres placed by the height range), the two centres are of different "
       "parts of it: this frame's centre places it (a position-only update) but does not enter "
-      "its velocity, and earlier centres are shifted with it (docs/tracking.md 'Session 22')");
+      "its velocity, and the feedback's motion history of it starts afresh (docs/tracking.md "
+      "'Session 22')");
     v("first_frame_motion", first_frame_motion,
       "a new moving track's velocity is measured in its first frame, from the previous frame's "
       "points the flow carries onto its mask (else it starts at its prior, 0 +- 1 m/s)");
