@@ -22,7 +22,7 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
       cv::Rect(0, 0, size.width, size.height);
   // Previous-frame grid points the flow carries onto the new mask, with depth at both ends.
   std::vector<cv::Point2f> from;
-  std::vector<Eigen::Vector2d> to;
+  std::vector<cv::Point2f> to;
   std::vector<float> z_from;
   std::vector<float> z_to;
   const int step = std::max(1, input.step_px);
@@ -49,11 +49,14 @@ std::optional<FirstMotion> firstFrameMotion(const FirstMotionInput& input,
   std::vector<Vec3> p_prev_world;
   std::vector<Eigen::Vector2d> pixels;
   std::vector<double> depth_now;
+  // Rays are the undistorted pixels' (the depth stays the lens pixel's, as registered).
+  const std::vector<cv::Point2f> ray_from = input.camera.undistortPixels(from);
+  const std::vector<cv::Point2f> ray_to = input.camera.undistortPixels(to);
   for (size_t i = 0; i < from.size(); ++i) {
     if (!keep[i]) continue;
     p_prev_world.push_back(previous.T_world_camera *
-                           input.camera.backproject(from[i].x, from[i].y, z_from[i]));
-    pixels.push_back(to[i]);
+                           input.camera.backproject(ray_from[i].x, ray_from[i].y, z_from[i]));
+    pixels.emplace_back(ray_to[i].x, ray_to[i].y);
     depth_now.push_back(z_to[i]);
   }
   if (int(pixels.size()) < options.min_points) return std::nullopt;

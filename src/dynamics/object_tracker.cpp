@@ -177,9 +177,15 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   }
   std::optional<Vec3> v_measured;
   if (dt > 0.0) {
-    const ObjectMotion motion = estimateObjectMotion(
-        kept.p_prev_world, kept.pixels, T_camera_world, input.camera, track.motion,
-        motionOptions(input.frame_index, track.id), kept_depth_m);
+    // The motion is fitted to the rays of the points (undistorted pixels), as their 3D was.
+    std::vector<Eigen::Vector2d> rays_px = kept.pixels;
+    if (input.camera.isDistorted()) {
+      const std::vector<cv::Point2f> undistorted = input.camera.undistortPixels(kept_pixels);
+      for (size_t i = 0; i < rays_px.size(); ++i) rays_px[i] = {undistorted[i].x, undistorted[i].y};
+    }
+    const ObjectMotion motion =
+        estimateObjectMotion(kept.p_prev_world, rays_px, T_camera_world, input.camera, track.motion,
+                             motionOptions(input.frame_index, track.id), kept_depth_m);
     if (motion.ok) {
       v_measured = inlierCentroidVelocity(motion, kept.p_prev_world, dt);
       track.motion = motion.H_world;

@@ -99,8 +99,8 @@ int flowEndSearchRadiusPx(const FlowEndDepth& end_depth, double expected_z_m, do
 /// Follows sampled pixels of the previous frame through a dense flow field (CV_32FC2, previous →
 /// current, e.g. DIS) and lifts both ends with depth. Pixels that leave the image or lack depth
 /// at either end are dropped; `kept` (optional) receives the indices of the pixels kept.
-/// Pixels are lifted with the pinhole model as they are: distortion shifts both ends alike, so
-/// the displacement it adds is small next to the 0.02 m threshold.
+/// Pixels are the lens's (distorted, as the flow and the registered depth are); each end is
+/// lifted along its undistorted pixel's ray.
 void liftFlowCorrespondences(const std::vector<cv::Point>& prev_pixels, const cv::Mat& flow,
                              const cv::Mat& prev_depth_m, const cv::Mat& cur_depth_m,
                              const PinholeCamera& camera, std::vector<Vec3>& p_prev_camera,
