@@ -171,18 +171,17 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const double z_predicted = (T_camera_world * (track.motion * carried.p_prev_world[i])).z();
     if (z <= 0.f || std::abs(z - z_predicted) > config_.depth_band_m) continue;
     kept.p_prev_world.push_back(carried.p_prev_world[i]);
-    kept.pixels.push_back(px);
     kept_pixels.emplace_back(float(px.x()), float(px.y()));
     kept_depth_m.push_back(z);
   }
+  // The motion is fitted to the points' rays (undistorted pixels), as their 3D was lifted; a
+  // carried track's points are lifted along the same rays below.
+  const std::vector<cv::Point2f> kept_rays = input.camera.undistortPixels(kept_pixels);
   std::optional<Vec3> v_measured;
   if (dt > 0.0) {
-    // The motion is fitted to the rays of the points (undistorted pixels), as their 3D was.
-    std::vector<Eigen::Vector2d> rays_px = kept.pixels;
-    if (input.camera.isDistorted()) {
-      const std::vector<cv::Point2f> undistorted = input.camera.undistortPixels(kept_pixels);
-      for (size_t i = 0; i < rays_px.size(); ++i) rays_px[i] = {undistorted[i].x, undistorted[i].y};
-    }
+    std::vector<Eigen::Vector2d> rays_px;
+    rays_px.reserve(kept_rays.size());
+    for (const cv::Point2f& r : kept_rays) rays_px.emplace_back(r.x, r.y);
     const ObjectMotion motion =
         estimateObjectMotion(kept.p_prev_world, rays_px, T_camera_world, input.camera, track.motion,
                              motionOptions(input.frame_index, track.id), kept_depth_m);
@@ -203,7 +202,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.trunk = sample.trunk;
     track.cut_side = instanceCutSide(*instance, input.instances.labels.cols);
   } else {
-    lift(track, kept_pixels, input);
+    lift(track, kept_pixels, input, &kept_rays);
     // The voters stay voters while the object is unseen: without a mask nothing says a pixel
     // that now has depth is still on it.
     track.voters.clear();

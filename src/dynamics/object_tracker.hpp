@@ -132,9 +132,10 @@ class ObjectTracker {
   /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
   ObjectSample samplePixels(const Instance& instance, const ObjectTrackerInput& input) const;
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped,
-  /// those without depth kept as voters.
-  void lift(Track& track, const std::vector<cv::Point2f>& pixels,
-            const ObjectTrackerInput& input) const;
+  /// those without depth kept as voters. `rays`: the pixels undistorted, when the caller has
+  /// them (else undistorted here).
+  void lift(Track& track, const std::vector<cv::Point2f>& pixels, const ObjectTrackerInput& input,
+            const std::vector<cv::Point2f>* rays = nullptr) const;
   TrackedObject report(const Track& track, const ObjectTrackerInput& input) const;
 
   /// Noise (m) of a centre component the visible part does not measure (an object cut by the

@@ -121,7 +121,8 @@ ObjectSample ObjectTracker::samplePixels(const Instance& instance,
 }
 
 void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
-                         const ObjectTrackerInput& input) const {
+                         const ObjectTrackerInput& input,
+                         const std::vector<cv::Point2f>* rays) const {
   track.pixels.clear();
   track.p_world.clear();
   track.voters.clear();
@@ -133,20 +134,17 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   }
   if (track.voters.size() == pixels.size()) return;  // no depth at all (or no pixels)
   const std::vector<uint8_t> keep = withinDepthBand(z, config_.depth_band_m);
-  std::vector<float> z_kept;
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    if (!keep[i]) continue;
-    track.pixels.push_back(pixels[i]);
-    z_kept.push_back(z[i]);
-  }
   // The pixels (and the depth image registered to them) are the lens's; the ray is the
   // undistorted pixel's (at fr1's image corners a raw pixel is up to 18 px off it, an offset
   // that changes as the point moves in the image: a still object there would read as moving).
-  const std::vector<cv::Point2f> undistorted = input.camera.undistortPixels(track.pixels);
-  for (size_t i = 0; i < undistorted.size(); ++i)
-    track.p_world.push_back(input.T_world_camera * input.camera.backproject(undistorted[i].x,
-                                                                            undistorted[i].y,
-                                                                            z_kept[i]));
+  std::vector<cv::Point2f> undistorted;
+  if (!rays) rays = &(undistorted = input.camera.undistortPixels(pixels));
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    if (!keep[i]) continue;
+    track.pixels.push_back(pixels[i]);
+    const cv::Point2f& ray = (*rays)[i];
+    track.p_world.push_back(input.T_world_camera * input.camera.backproject(ray.x, ray.y, z[i]));
+  }
   track.depth_share = double(track.pixels.size()) / double(pixels.size());
 }
 

@@ -11,8 +11,8 @@ using namespace dynanav;
 
 namespace {
 
-/// Where a still world point seen at raw pixel `start` by a camera at T_world_a appears to a
-/// camera at T_world_b (raw pixel), given its depth in camera a.
+/// The raw (lens) pixel at which camera b sees the still point that camera a sees along the
+/// undistorted pixel `ray_px` at `depth_m`; T_b_a maps camera a's coordinates into camera b's.
 cv::Point2f rawPixelFrom(const PinholeCamera& cam, const cv::Point2f& ray_px, double depth_m,
                          const SE3& T_b_a) {
   const Vec3 p_b = T_b_a * cam.backproject(ray_px.x, ray_px.y, depth_m);
