@@ -39,6 +39,7 @@ Hazard assessHazard(const TrackedObject& o, const GroundMotion& motion, const Bo
   h.object_id = o.id;
   h.class_name = o.class_name;
   h.person = o.class_name == "person";
+  h.seen = o.missed_frames == 0;
   h.p_world = o.p_world;
   const Eigen::Vector2d r_body = body.toBody(o.p_world);  // (right, forward)
   h.distance_m = r_body.norm();

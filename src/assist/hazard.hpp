@@ -25,6 +25,7 @@ struct Hazard {
   std::string class_name;
   bool person = false;
   bool moving = false;  ///< tracked as dynamic and at least moving_speed_mps over ground
+  bool seen = true;     ///< the segmenter found it this frame (not only carried by its flow)
   Vec3 p_world = Vec3::Zero();
   double distance_m = 0.0;   ///< on the ground plane, from the wearer
   double bearing_deg = 0.0;  ///< body frame, right of the walking direction positive

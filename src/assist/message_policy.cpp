@@ -17,9 +17,9 @@ double angleBetweenDeg(double a_deg, double b_deg) {
 }  // namespace
 
 std::optional<MessageCandidate> classifyHazard(const Hazard& h, bool announced,
-                                               const AssistConfig& config) {
+                                               const AssistConfig& config, bool urgent_allowed) {
   const bool closing = h.ttc_warn_s >= 0.0;
-  if (h.user_related && closing && h.ttc_warn_s <= config.urgent_ttc_s)
+  if (urgent_allowed && h.user_related && closing && h.ttc_warn_s <= config.urgent_ttc_s)
     return MessageCandidate{FeedbackPriority::kUrgent, "approaching"};
   if (closing && h.ttc_warn_s <= config.advisory_ttc_s && h.closest_m <= config.advisory_pass_m)
     return MessageCandidate{FeedbackPriority::kAdvisory, "approaching"};
@@ -115,7 +115,14 @@ std::vector<FeedbackEvent> MessagePolicy::step(double stamp_s, const std::vector
   for (const Hazard& h : hazards) {
     const auto said = said_.find(h.object_id);
     const bool announced = said != said_.end();
-    const auto candidate = classifyHazard(h, announced, config_);
+    // Urgency is for what the segmenter confirms: carried by its flow points alone, an object
+    // keeps the urgency it had when last found but does not gain one (a carried false segment's
+    // points drift with the depth's error and read as an approach; a walker found approaching and
+    // then lost in blur stays urgent).
+    bool& urgent_when_seen = urgent_when_seen_[h.object_id];
+    const bool urgent_allowed = !config_.urgent_needs_sight || h.seen || urgent_when_seen;
+    const auto candidate = classifyHazard(h, announced, config_, urgent_allowed);
+    if (h.seen) urgent_when_seen = candidate && candidate->priority == FeedbackPriority::kUrgent;
     const auto waiting = pending_.find(h.object_id);
     if (!confirmed(stamp_s, h, candidate)) {
       // A condition still being confirmed (say, a new urgency) keeps what was waiting as it was.
@@ -130,11 +137,13 @@ std::vector<FeedbackEvent> MessagePolicy::step(double stamp_s, const std::vector
   }
   // Waiting messages whose condition ended are stale; the rest carry this frame's values.
   for (const auto& [id, p] : pending_) dropped_ += fresh.count(id) ? 0 : 1;
-  for (auto it = streaks_.begin(); it != streaks_.end();) {
-    bool seen = false;
-    for (const Hazard& h : hazards) seen |= h.object_id == it->first;
-    it = seen ? std::next(it) : streaks_.erase(it);
-  }
+  const auto present = [&](uint64_t id) {
+    for (const Hazard& h : hazards)
+      if (h.object_id == id) return true;
+    return false;
+  };
+  std::erase_if(streaks_, [&](const auto& entry) { return !present(entry.first); });
+  std::erase_if(urgent_when_seen_, [&](const auto& entry) { return !present(entry.first); });
   pending_ = std::move(fresh);
   // Old news: a message that waited too long is dropped; the object is spoken of again when its
   // situation changes.

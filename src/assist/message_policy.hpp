@@ -4,6 +4,8 @@
 //    collision <= advisory_ttc_s while passing within advisory_pass_m, a person within
 //    near_person_m, or a static obstacle in the corridor ahead within obstacle_ahead_m; info =
 //    a moving person not announced before;
+//  - an object the segmenter did not find this frame (carried by its flow) may stay urgent,
+//    not become so (urgent_needs_sight);
 //  - a condition must hold for confirm_frames frames in a row before it raises a message; news
 //    of a new person waits info_hold_s more (a hazard found meanwhile is said instead);
 //  - no repeat unless the situation changed: a higher priority than last said, the distance
@@ -29,9 +31,11 @@ struct MessageCandidate {
   FeedbackPriority priority = FeedbackPriority::kInfo;
   std::string kind;  ///< "approaching" | "nearby" | "obstacle" | "new_person"
 };
-/// `announced`: the object was spoken of before (then it is no longer "new").
+/// `announced`: the object was spoken of before (then it is no longer "new"). `urgent_allowed`
+/// false: the urgent condition is not checked (the hazard is judged as advisory at most).
 std::optional<MessageCandidate> classifyHazard(const Hazard& hazard, bool announced,
-                                               const AssistConfig& config);
+                                               const AssistConfig& config,
+                                               bool urgent_allowed = true);
 
 class MessagePolicy {
  public:
@@ -73,6 +77,8 @@ class MessagePolicy {
   Language language_;
   std::map<uint64_t, Said> said_;  // by object id (ordered: deterministic)
   std::map<uint64_t, Streaks> streaks_;
+  // Whether the urgent condition held the last frame the segmenter found the object.
+  std::map<uint64_t, bool> urgent_when_seen_;
   std::map<uint64_t, Pending> pending_;
   double busy_until_s_ = -1e9;  // the message being spoken ends then (estimate)
   bool speaking_urgent_ = false;

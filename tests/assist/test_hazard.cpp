@@ -45,6 +45,10 @@ TEST(Hazard, HeadOnWalkerClosestApproachAndTtc) {
   EXPECT_NEAR(h.distance_m, std::hypot(0.5, 6.0), 1e-9);
   EXPECT_EQ(h.clock, 12);
   EXPECT_GT(h.bearing_deg, 0.0);  // right of the walking direction
+  EXPECT_TRUE(h.seen);
+  TrackedObject carried = person({0.5, 0.0, 6.0}, {0, 0, -1});
+  carried.missed_frames = 2;  // the segmenter missed it: carried by its flow points
+  EXPECT_FALSE(assessHazard(carried, walkingNorth(1.0), config).seen);
 }
 
 TEST(Hazard, HeightDoesNotCount) {

@@ -2,6 +2,9 @@
 // and change detection, urgent interrupts, stale drops, the hold on news of a new person.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
+
 #include "assist/message_policy.hpp"
 
 namespace dynanav {
@@ -224,6 +227,60 @@ TEST(MessagePolicy, GermanTemplates) {
   ASSERT_EQ(e.size(), 1u);
   EXPECT_EQ(e[0].text, "Person, 12 Uhr, 2 Meter, kommt schnell näher");
   EXPECT_EQ(e[0].language, "de");
+}
+
+/// The priorities of every message `frames` frames of `hazard` raise, `seen` deciding per frame
+/// whether the segmenter found the object.
+std::vector<FeedbackPriority> prioritiesSaid(const AssistConfig& config, const Hazard& hazard,
+                                             int frames, const std::function<bool(int)>& seen) {
+  MessagePolicy policy(config, Language::kEnglish);
+  std::vector<FeedbackPriority> said;
+  for (int i = 0; i < frames; ++i) {
+    Hazard h = hazard;
+    h.seen = seen(i);
+    for (const FeedbackEvent& e : policy.step(i * kDt, {h})) said.push_back(e.priority);
+  }
+  return said;
+}
+
+bool anyUrgent(const std::vector<FeedbackPriority>& said) {
+  return std::count(said.begin(), said.end(), FeedbackPriority::kUrgent) > 0;
+}
+
+TEST(MessagePolicy, AnObjectCarriedByItsFlowAloneDoesNotBecomeUrgent) {
+  // An approach the segmenter never confirms (a false segment carried by its points): the
+  // advisory at most, however near its time to collision.
+  const Hazard approach = approachingPerson(1, 4.0, 2.2, true);
+  const AssistConfig c;
+  const auto carried = prioritiesSaid(c, approach, 30, [](int) { return false; });
+  EXPECT_FALSE(anyUrgent(carried));
+  EXPECT_EQ(carried, std::vector<FeedbackPriority>{FeedbackPriority::kAdvisory});
+  AssistConfig off;
+  off.urgent_needs_sight = false;
+  EXPECT_TRUE(anyUrgent(prioritiesSaid(off, approach, 30, [](int) { return false; })));
+  // Found in the first frame only, with the urgency already there: the urgency carries on (a
+  // walker found approaching and then lost in blur), confirmed on the next, carried, frame.
+  const auto found_once = prioritiesSaid(c, approach, 30, [](int i) { return i == 0; });
+  ASSERT_FALSE(found_once.empty());
+  EXPECT_EQ(found_once.front(), FeedbackPriority::kUrgent);
+}
+
+TEST(MessagePolicy, AnUrgencyThatAroseWhileCarriedWaitsForTheSegmenter) {
+  // Found while still far in time (6 s), then carried while the approach reads urgent: no urgent
+  // warning until the segmenter finds it again (frame 20), then after confirm_frames.
+  const AssistConfig c;
+  MessagePolicy policy(c, Language::kEnglish);
+  std::vector<std::pair<int, FeedbackPriority>> said;
+  for (int i = 0; i < 30; ++i) {
+    Hazard h = approachingPerson(1, 4.0, i < 5 ? 6.0 : 2.2, i >= 5);
+    h.seen = i < 5 || i >= 20;
+    for (const FeedbackEvent& e : policy.step(i * kDt, {h})) said.emplace_back(i, e.priority);
+  }
+  const auto first_urgent = std::find_if(said.begin(), said.end(), [](const auto& s) {
+    return s.second == FeedbackPriority::kUrgent;
+  });
+  ASSERT_NE(first_urgent, said.end());
+  EXPECT_EQ(first_urgent->first, 20 + c.confirm_frames - 1);
 }
 
 }  // namespace

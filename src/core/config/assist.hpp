@@ -34,6 +34,7 @@ struct AssistConfig {
   double moving_speed_mps = 0.3;
   double fast_closing_mps = 1.2;
   int confirm_frames = 2;
+  bool urgent_needs_sight = true;
   double info_hold_s = 0.5;
   double min_gap_s = 3.0;
   double stale_s = 4.0;
@@ -106,6 +107,12 @@ struct AssistConfig {
       "a message's condition must hold on this many consecutive frames before it is raised "
       "(a one-frame velocity spike of a track raises nothing)",
       Range{1, 100});
+    v("urgent_needs_sight", urgent_needs_sight,
+      "an object the segmenter did not find this frame (carried by its flow points alone) may "
+      "stay urgent if it was when last found, but not become urgent: its motion then is the "
+      "flow's, which no mask confirms (static fr1_xyz in real time: a false 'person' on the desk, "
+      "carried 5-6 frames while its points read nearer, was warned as approaching; off: "
+      "carried objects are judged as found ones)");
     v("info_hold_s", info_hold_s,
       "news of a new moving person waits this long (s): if the person turns out to be a hazard "
       "meanwhile, the advisory is the one message said about them",
