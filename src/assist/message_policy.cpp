@@ -1,5 +1,6 @@
 #include "assist/message_policy.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynanav {
@@ -119,7 +120,7 @@ std::vector<FeedbackEvent> MessagePolicy::step(double stamp_s, const std::vector
     // keeps the urgency it had when last found but does not gain one (a carried false segment's
     // points drift with the depth's error and read as an approach; a walker found approaching and
     // then lost in blur stays urgent).
-    bool& urgent_when_seen = urgent_when_seen_[h.object_id];
+    bool& urgent_when_seen = streaks_[h.object_id].urgent_when_seen;
     const bool urgent_allowed = !config_.urgent_needs_sight || h.seen || urgent_when_seen;
     const auto candidate = classifyHazard(h, announced, config_, urgent_allowed);
     if (h.seen) urgent_when_seen = candidate && candidate->priority == FeedbackPriority::kUrgent;
@@ -137,13 +138,10 @@ std::vector<FeedbackEvent> MessagePolicy::step(double stamp_s, const std::vector
   }
   // Waiting messages whose condition ended are stale; the rest carry this frame's values.
   for (const auto& [id, p] : pending_) dropped_ += fresh.count(id) ? 0 : 1;
-  const auto present = [&](uint64_t id) {
-    for (const Hazard& h : hazards)
-      if (h.object_id == id) return true;
-    return false;
-  };
-  std::erase_if(streaks_, [&](const auto& entry) { return !present(entry.first); });
-  std::erase_if(urgent_when_seen_, [&](const auto& entry) { return !present(entry.first); });
+  std::erase_if(streaks_, [&](const auto& entry) {
+    return std::none_of(hazards.begin(), hazards.end(),
+                        [&](const Hazard& h) { return h.object_id == entry.first; });
+  });
   pending_ = std::move(fresh);
   // Old news: a message that waited too long is dropped; the object is spoken of again when its
   // situation changes.

@@ -60,7 +60,8 @@ class MessagePolicy {
   };
   struct Streaks {  // consecutive frames each priority's condition held
     int info = 0, advisory = 0, urgent = 0;
-    double info_since_s = 0.0;  // when the info streak began
+    double info_since_s = 0.0;      // when the info streak began
+    bool urgent_when_seen = false;  // the urgent condition held the last frame it was found
   };
 
   [[nodiscard]] bool changed(const Said& said, FeedbackPriority priority, const Hazard& hazard,
@@ -77,8 +78,6 @@ class MessagePolicy {
   Language language_;
   std::map<uint64_t, Said> said_;  // by object id (ordered: deterministic)
   std::map<uint64_t, Streaks> streaks_;
-  // Whether the urgent condition held the last frame the segmenter found the object.
-  std::map<uint64_t, bool> urgent_when_seen_;
   std::map<uint64_t, Pending> pending_;
   double busy_until_s_ = -1e9;  // the message being spoken ends then (estimate)
   bool speaking_urgent_ = false;
