@@ -98,10 +98,11 @@ TrackOutcome SlamSystem::trackLocalMap(Frame& frame, InitialPose initial) {
 
 void SlamSystem::finishFrame(const Frame& frame, const TrackOutcome& outcome) {
   mapping_->runPending();
-  std::unique_lock lock(map_->mutex());  // the reference's pose may be under local BA
+  std::unique_lock lock(map_->mutex());  // local BA or a loop correction may be moving keyframes
+  // The relative pose as tracked, not recomputed here: local mapping (and in deterministic runs a
+  // loop correction) has just moved the reference, and the frame's own pose did not follow.
   if (outcome.state == TrackingState::kOk && outcome.reference)
-    anchors_.add(frame.stamp_s, outcome.reference,
-                 frame.T_camera_world * outcome.reference->T_world_camera());
+    anchors_.add(frame.stamp_s, outcome.reference, outcome.T_frame_reference);
   anchors_.reanchorCulled();
 }
 

@@ -43,6 +43,7 @@ bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
   outcome.new_keyframe = kf;
   awaiting_motion_ = kf;
   outcome.reference = kf;
+  outcome.T_frame_reference = frame.T_camera_world * kf->T_world_camera();
   outcome.inliers = with_depth;
   return true;
 }
@@ -234,6 +235,7 @@ TrackOutcome Tracker::trackLocalMap(Frame& frame, InitialPose initial) {
   }
   rememberAsLast(frame);
   outcome.reference = reference_;
+  outcome.T_frame_reference = T_last_reference_;
   lock.unlock();
   if (outcome.new_keyframe) mapping_.insert(outcome.new_keyframe);
   outcome.state = state_;

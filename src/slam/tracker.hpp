@@ -24,6 +24,9 @@ struct TrackOutcome {
   int inliers = 0;           ///< local-map inliers (or map points created at initialisation)
   bool recovered = false;    ///< this frame ended a loss
   KeyFramePtr reference;     ///< reference keyframe of a tracked frame (for final pose refinement)
+  /// The frame's pose relative to `reference` as tracked: taken before local mapping or a loop
+  /// correction moves the reference, so the refined trajectory moves the frame with it.
+  SE3 T_frame_reference = SE3::Identity();
 };
 
 /// What the first tracking phase (initial pose) hands to the second (local map) for one frame.
