@@ -13,7 +13,10 @@ namespace dynanav {
 /// Camera-tracking thresholds.
 struct TrackingConfig {
   double depth_max_m = 8.0;  // depths beyond this are treated as invalid
-  int init_min_depth_features = 500;
+  // ORB-SLAM2 starts an RGB-D map from a frame of over 500 keypoints, with depth or not; 500 *with*
+  // depth kept a hall whose far end lies beyond the depth range from ever starting. Tracking needs
+  // local_map_min_inliers (30): 150 points leave it a fivefold margin.
+  int init_min_depth_features = 150;
   int motion_search_radius_px = 15;
   int motion_min_matches = 20;
   int reference_min_matches = 15;
