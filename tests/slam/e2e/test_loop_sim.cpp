@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/se3.hpp"
 #include "io/json_io.hpp"
 #include "io/trajectory.hpp"
+#include "keyframe_gap.hpp"
 #include "slam/vocabulary/vocabulary_path.hpp"
 #include "support/test_support.hpp"
 
@@ -28,27 +28,6 @@ double endDrift(const fs::path& gt_path, const fs::path& est_path) {
     return std::abs(a.stamp_s - last.stamp_s) < std::abs(b.stamp_s - last.stamp_s);
   });
   return (nearest->T_world_camera.translation() - last.T_world_camera.translation()).norm();
-}
-
-// Largest distance between a keyframe's final pose (keyframes.txt) and the pose trajectory.txt
-// writes for the frame that became it: each frame is anchored on its reference keyframe with the
-// relative pose it was tracked at, so a keyframe's own frame must move with it through local
-// bundle adjustment and loop correction (it did not while the relative pose was taken after
-// them: 2.9 m off at a loop frame on Bonn crowd with `--segmenter none`).
-double keyframeFrameGap(const fs::path& out) {
-  const auto keyframes = readTrajectory(out / "keyframes.txt");
-  const auto frames = readTrajectory(out / "trajectory.txt");
-  double gap = keyframes.empty() ? 1e9 : 0.0;
-  for (const StampedPose& kf : keyframes) {
-    const auto same = std::find_if(frames.begin(), frames.end(),
-                                   [&](const StampedPose& f) { return f.stamp_s == kf.stamp_s; });
-    if (same == frames.end()) return 1e9;
-    gap = std::max(gap,
-                   (same->T_world_camera.translation() - kf.T_world_camera.translation()).norm());
-    gap = std::max(
-        gap, rotationAngle(same->T_world_camera.linear().transpose() * kf.T_world_camera.linear()));
-  }
-  return gap;
 }
 
 TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
@@ -88,8 +67,8 @@ TEST(LoopSim, LoopIsClosedAndEndDriftShrinksFiveTimes) {
               drift_on, drift_off / drift_on);
   EXPECT_LE(drift_on * 5.0, drift_off);
   // Written with 9 decimals: a keyframe's frame is where its keyframe ended, loop or not.
-  EXPECT_LT(keyframeFrameGap(on), 1e-6);
-  EXPECT_LT(keyframeFrameGap(off), 1e-6);
+  EXPECT_LT(test::keyframeFrameGap(on), 1e-6);
+  EXPECT_LT(test::keyframeFrameGap(off), 1e-6);
 }
 
 TEST(LoopSim, MissingVocabularyDisablesPlaceRecognitionWithOneWarningAndInStats) {
