@@ -73,7 +73,8 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
                          {"speed_rmse_known_mps", s.speed_rmse_known_mps},
                          {"stopped_frames", s.stopped_frames},
                          {"speed_mean_stopped_mps", s.speed_mean_stopped_mps},
-                         {"speed_max_stopped_mps", s.speed_max_stopped_mps}});
+                         {"speed_max_stopped_mps", s.speed_max_stopped_mps},
+                         {"speed_rmse_stopped_mps", s.speed_rmse_stopped_mps}});
     std::cout << nlohmann::json{{"frames", m.frames},
                                 {"scored", m.scored},
                                 {"matched", m.matched},
@@ -105,11 +106,11 @@ int runEvalObjects(const EvalObjectsOptions& opt) {
     std::cout << fmt::format(
         "object {} {}: {}/{} frames (recall {:.3f}), {} id switches ({:.2f} per 100 "
         "frames), position {:.4f} m, speed {:.4f} m/s (known {} frames: {:.4f}; moving {} "
-        "frames: {:.4f}; stopped {} frames: mean {:.4f} max {:.4f} m/s)\n",
+        "frames: {:.4f}; stopped {} frames: mean {:.4f} max {:.4f} rmse {:.4f} m/s)\n",
         s.class_name, s.gt_id, s.matched, s.scored_frames, s.recall(), s.id_switches,
         s.switchesPer100(), s.position_rmse_m, s.speed_rmse_mps, s.speed_known_frames,
         s.speed_rmse_known_mps, s.moving_frames, s.speed_rmse_moving_mps, s.stopped_frames,
-        s.speed_mean_stopped_mps, s.speed_max_stopped_mps);
+        s.speed_mean_stopped_mps, s.speed_max_stopped_mps, s.speed_rmse_stopped_mps);
   return kExitOk;
 }
 

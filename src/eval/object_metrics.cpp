@@ -11,7 +11,7 @@ namespace dynanav {
 namespace {
 
 struct Sums {
-  double position2 = 0, speed2 = 0, velocity2 = 0, moving2 = 0, stopped = 0;
+  double position2 = 0, speed2 = 0, velocity2 = 0, moving2 = 0, stopped = 0, stopped2 = 0;
   double known2 = 0;  // speed errors of frames whose estimate reports its velocity as known
   int known = 0;
 };
@@ -119,6 +119,7 @@ ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
       } else {
         ++s.stopped_frames;
         sum.stopped += guess.speed_mps;
+        sum.stopped2 += ds * ds;
         s.speed_max_stopped_mps = std::max(s.speed_max_stopped_mps, guess.speed_mps);
       }
     }
@@ -132,6 +133,7 @@ ObjectMetrics scoreObjects(const std::vector<ObjectsFrame>& gt,
     s.speed_known_frames = sum.known;
     s.speed_rmse_known_mps = rootMean(sum.known2, sum.known);
     s.speed_mean_stopped_mps = s.stopped_frames ? sum.stopped / s.stopped_frames : 0.0;
+    s.speed_rmse_stopped_mps = rootMean(sum.stopped2, s.stopped_frames);
     out.objects.push_back(s);
   }
   out.position_rmse_m = rootMean(total.position2, out.matched);

@@ -37,6 +37,8 @@ struct ObjectScore {
   int stopped_frames = 0;  ///< matched frames standing still
   double speed_max_stopped_mps = 0.0;
   double speed_mean_stopped_mps = 0.0;
+  /// RMSE of the speed over the stopped frames: the statistic the moving frames are scored with
+  double speed_rmse_stopped_mps = 0.0;
   int speed_known_frames = 0;         ///< matched frames whose estimate has velocity_known
   double speed_rmse_known_mps = 0.0;  ///< speed RMSE over those frames only
   [[nodiscard]] double recall() const {

@@ -43,5 +43,25 @@ TEST(ObjectMetrics, SpeedRmseOverAllFramesAndOverFramesWithAKnownVelocity) {
   EXPECT_NEAR(m.position_rmse_m, 0.05, 1e-9);
 }
 
+TEST(ObjectMetrics, StoppedFramesAreScoredByMeanMaxAndRmse) {
+  // A box that has stopped: the first frame after the stop still reads 0.4 m/s, then 0.1, 0, 0.
+  std::vector<ObjectsFrame> gt, est;
+  const double reported[] = {0.4, 0.1, 0.0, 0.0};
+  for (int i = 0; i < 4; ++i) {
+    const double t = i / 30.0;
+    const Vec3 p(1.0, 0.0, 2.0);
+    gt.push_back({t, {object(1, p, 0.0, true)}});
+    est.push_back({t, {object(2, p, reported[i], true)}});
+  }
+  const ObjectMetrics m = scoreObjects(gt, est);
+  ASSERT_EQ(m.objects.size(), 1u);
+  const ObjectScore& s = m.objects[0];
+  EXPECT_EQ(s.stopped_frames, 4);
+  EXPECT_EQ(s.moving_frames, 0);
+  EXPECT_NEAR(s.speed_mean_stopped_mps, 0.125, 1e-9);
+  EXPECT_NEAR(s.speed_max_stopped_mps, 0.4, 1e-9);
+  EXPECT_NEAR(s.speed_rmse_stopped_mps, std::sqrt((0.16 + 0.01) / 4.0), 1e-9);
+}
+
 }  // namespace
 }  // namespace dynanav
