@@ -22,11 +22,8 @@ void simulateAndRun(const std::string& scenario, int frames, const fs::path& seq
                          &log),
             0)
       << log;
-  // The 14 m hall leaves fewer than the default 500 keypoints with depth at the start.
-  std::ofstream(out / "c.yaml") << "tracking:\n  init_min_depth_features: 150\n";
   ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + out.string() +
-                             " --segmenter masks --deterministic --quiet --config " +
-                             (out / "c.yaml").string() + " " + flags,
+                             " --segmenter masks --deterministic --quiet " + flags,
                          &log),
             0)
       << log;

@@ -4,7 +4,6 @@
 // the tracker does not reach yet. Also: --deterministic gives identical objects.jsonl twice.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.hpp"
@@ -23,11 +22,9 @@ TEST(TrackingE2e, CrossingWalkerIsTrackedWithOneIdAndPlausibleSpeed) {
                          &log),
             0)
       << log;
-  std::ofstream(out / "c.yaml") << "tracking:\n  init_min_depth_features: 150\n";
   for (const fs::path& o : {out, out2})
     ASSERT_EQ(test::runCli("run " + seq.string() + " --out " + o.string() +
-                               " --segmenter masks --deterministic --quiet --config " +
-                               (out / "c.yaml").string(),
+                               " --segmenter masks --deterministic --quiet",
                            &log),
               0)
         << log;
