@@ -3,9 +3,25 @@
 #include <functional>
 
 #include "slam/matcher.hpp"
+#include "slam/persistent_pose.hpp"
 #include "slam/pose_optimizer.hpp"
 
 namespace dynanav {
+
+PoseObservation poseObservation(const Frame& frame, int keypoint) {
+  const Features& f = frame.features;
+  PoseObservation obs;
+  obs.p_world = frame.map_points[keypoint]->p_world;
+  obs.u = f.points[keypoint].x;
+  obs.v = f.points[keypoint].y;
+  obs.u_right = f.u_right[keypoint];
+  obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[keypoint].octave];
+  return obs;
+}
+
+PoseCamera poseCamera(const PinholeCamera& cam) {
+  return {cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
+}
 
 int optimizePoseOver(const Frame& frame, const TrackingConfig& config,
                      const std::function<bool(int)>& use, SE3& T_camera_world,
@@ -18,16 +34,10 @@ int optimizePoseOver(const Frame& frame, const TrackingConfig& config,
   for (int i = 0; i < frame.size(); ++i) {
     const MapPointPtr& point = frame.map_points[i];
     if (!point || !use(i)) continue;
-    PoseObservation obs;
-    obs.p_world = point->p_world;
-    obs.u = f.points[i].x;
-    obs.v = f.points[i].y;
-    obs.u_right = f.u_right[i];
-    obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[i].octave];
-    observations.push_back(obs);
+    observations.push_back(poseObservation(frame, i));
     keypoint_of.push_back(i);
   }
-  const PoseCamera camera{cam.fx, cam.fy, cam.cx, cam.cy, cam.bf()};
+  const PoseCamera camera = poseCamera(cam);
   PoseOptimizerOptions options;
   options.rounds = config.pose_rounds;
   options.iterations_per_round = config.pose_iterations;
@@ -109,7 +119,9 @@ int trackLocalMap(Frame& frame, const std::map<uint64_t, KeyFramePtr>& keyframes
                               static_cast<float>(config.local_search_radius_factor),
                               static_cast<float>(config.local_nn_ratio));
   }
-  optimizeFramePose(frame, config);
+  // Movers nobody masked can outnumber the static points: the pose is found on the part of the
+  // map that has stayed put for a while when enough of it is in view (slam/persistent_pose).
+  if (!optimizePoseOnPersistentPoints(frame, config).applied) optimizeFramePose(frame, config);
   int inliers = 0;
   for (int i = 0; i < frame.size(); ++i) {
     const MapPointPtr& point = frame.map_points[i];

@@ -10,8 +10,14 @@
 #include "slam/frame.hpp"
 #include "slam/keyframe.hpp"
 #include "slam/local_map.hpp"
+#include "slam/pose_optimizer.hpp"
 
 namespace dynanav {
+
+/// Keypoint `keypoint`'s match (it must have a map point) as a pose-optimisation observation.
+PoseObservation poseObservation(const Frame& frame, int keypoint);
+/// The camera's intrinsics as pose optimisation takes them.
+PoseCamera poseCamera(const PinholeCamera& camera);
 
 /// Pose-only optimisation of the frame against its matched map points (sets frame.outlier).
 /// Returns the number of inliers.

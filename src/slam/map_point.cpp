@@ -8,13 +8,20 @@
 
 namespace dynanav {
 
-bool KeyFrameIdLess::operator()(const KeyFrame* a, const KeyFrame* b) const { return a->id < b->id; }
+bool KeyFrameIdLess::operator()(const KeyFrame* a, const KeyFrame* b) const {
+  return a->id < b->id;
+}
 
 MapPoint::MapPoint(uint64_t id_, const Vec3& p, KeyFrame* ref)
-    : id(id_), p_world(p), reference(ref), first_keyframe_id(ref ? ref->id : 0) {}
+    : id(id_),
+      p_world(p),
+      reference(ref),
+      first_keyframe_id(ref ? ref->id : 0),
+      first_mapped_s(ref ? ref->stamp_s : 0.0) {}
 
 void MapPoint::addObservation(KeyFrame* kf, int index) {
-  if (observations.emplace(kf, index).second) weighted_observations_ += kf->features.hasDepth(index) ? 2 : 1;
+  if (observations.emplace(kf, index).second)
+    weighted_observations_ += kf->features.hasDepth(index) ? 2 : 1;
 }
 
 void MapPoint::eraseObservation(KeyFrame* kf) {
@@ -67,7 +74,8 @@ void MapPoint::updateDescriptor() {
   const size_t n = descs.size();
   std::vector<int> dist(n * n, 0);
   for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) dist[i * n + j] = dist[j * n + i] = hammingDistance(descs[i], descs[j]);
+    for (size_t j = i + 1; j < n; ++j)
+      dist[i * n + j] = dist[j * n + i] = hammingDistance(descs[i], descs[j]);
   int best_median = INT32_MAX;
   size_t best = 0;
   std::vector<int> row(n);

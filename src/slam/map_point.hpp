@@ -31,6 +31,7 @@ class MapPoint {
   float max_distance_m = 0.f;
   KeyFrame* reference = nullptr;
   uint64_t first_keyframe_id = 0;
+  double first_mapped_s = 0.0;  ///< stamp of the keyframe that mapped it (slam/persistent_pose)
   std::map<KeyFrame*, int, KeyFrameIdLess> observations;  ///< keyframe -> keypoint index
   int visible = 1;                                        ///< frames in whose frustum it was
   int found = 1;                                          ///< frames in which it was matched

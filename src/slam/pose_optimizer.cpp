@@ -59,7 +59,8 @@ class PoseResiduals {
       if (robust_) {
         const double s = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
         const double delta_h = std::sqrt(stereo ? kChi2Stereo : kChi2Mono);
-        if (s > delta_h * delta_h) scale = std::sqrt((2.0 * delta_h * std::sqrt(s) - delta_h * delta_h) / s);
+        if (s > delta_h * delta_h)
+          scale = std::sqrt((2.0 * delta_h * std::sqrt(s) - delta_h * delta_h) / s);
       }
       for (int k = 0; k < dims; ++k) residuals[item.row + k] = scale * e[k];
       if (!jacobian) continue;
@@ -67,7 +68,7 @@ class PoseResiduals {
       const double inv_z2 = inv_z * inv_z;
       Eigen::Matrix<double, 3, 3> dproj;
       dproj << camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2,  //
-          0.0, camera_.fy * inv_z, -camera_.fy * p.y() * inv_z2,          //
+          0.0, camera_.fy * inv_z, -camera_.fy * p.y() * inv_z2,       //
           camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2 + camera_.bf * inv_z2;
       Eigen::Matrix<double, 3, 6> dp;
       dp.leftCols<3>() << 0.0, p.z(), -p.y(), -p.z(), 0.0, p.x(), p.y(), -p.x(), 0.0;
@@ -91,8 +92,16 @@ class PoseResiduals {
   int num_residuals_ = 0;
 };
 
-/// chi2 = e^T Omega e of an observation at pose T_cw (or infinity behind the camera).
-double chi2(const PoseObservation& obs, const PoseCamera& cam, const SE3& T_cw) {
+SE3 applyDelta(const Eigen::Matrix<double, 6, 1>& delta, const SE3& T0) {
+  SE3 D = SE3::Identity();
+  D.linear() = expSO3(delta.head<3>());
+  D.translation() = delta.tail<3>();
+  return orthonormalized(D * T0);
+}
+
+}  // namespace
+
+double reprojectionChi2(const PoseObservation& obs, const PoseCamera& cam, const SE3& T_cw) {
   const Vec3 p = T_cw * obs.p_world;
   if (p.z() <= 0.0) return std::numeric_limits<double>::infinity();
   const double inv_z = 1.0 / p.z();
@@ -106,15 +115,6 @@ double chi2(const PoseObservation& obs, const PoseCamera& cam, const SE3& T_cw) 
   }
   return e2 * obs.inv_sigma2;
 }
-
-SE3 applyDelta(const Eigen::Matrix<double, 6, 1>& delta, const SE3& T0) {
-  SE3 D = SE3::Identity();
-  D.linear() = expSO3(delta.head<3>());
-  D.translation() = delta.tail<3>();
-  return orthonormalized(D * T0);
-}
-
-}  // namespace
 
 int optimizePose(const std::vector<PoseObservation>& observations, const PoseCamera& camera,
                  const PoseOptimizerOptions& options, SE3& T_camera_world,
@@ -131,7 +131,8 @@ int optimizePose(const std::vector<PoseObservation>& observations, const PoseCam
     for (size_t i = 0; i < n; ++i)
       if (!outlier[i]) used.push_back(static_cast<int>(i));
     if (used.size() < 10) break;  // too few to trust another round
-    const PoseResiduals residuals(observations, used, camera, T_camera_world, round < options.rounds - 1);
+    const PoseResiduals residuals(observations, used, camera, T_camera_world,
+                                  round < options.rounds - 1);
     ceres::TinySolver<PoseResiduals> solver;
     solver.options.max_num_iterations = options.iterations_per_round;
     Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
@@ -140,7 +141,7 @@ int optimizePose(const std::vector<PoseObservation>& observations, const PoseCam
     inliers = 0;
     for (size_t i = 0; i < n; ++i) {
       const double threshold = observations[i].u_right >= 0.0 ? kChi2Stereo : kChi2Mono;
-      outlier[i] = chi2(observations[i], camera, T_camera_world) > threshold;
+      outlier[i] = reprojectionChi2(observations[i], camera, T_camera_world) > threshold;
       if (!outlier[i]) ++inliers;
     }
   }

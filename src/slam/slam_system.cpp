@@ -16,6 +16,16 @@
 
 namespace dynanav {
 
+namespace {
+/// Posing frames on the persistent map is part of the dynamic-scene handling: `--dynamic off`
+/// is the plain ORB-SLAM2 baseline the dynamic modes are compared with.
+TrackingConfig trackingFor(const Config& config) {
+  TrackingConfig tracking = config.tracking;
+  if (!config.run.dynamic) tracking.persistent_point_age_s = 0.0;
+  return tracking;
+}
+}  // namespace
+
 SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageTimers* timers)
     : config_(config),
       camera_(std::make_shared<const PinholeCamera>(camera)),
@@ -24,7 +34,7 @@ SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageT
       map_(std::make_unique<Map>()),
       mapping_(
           std::make_unique<MappingStage>(*map_, config.mapping, !config.run.deterministic, timers)),
-      tracker_(std::make_unique<Tracker>(*map_, *mapping_, config.tracking)) {
+      tracker_(std::make_unique<Tracker>(*map_, *mapping_, trackingFor(config))) {
   setUpPlaceRecognition();
 }
 

@@ -35,6 +35,10 @@ struct TrackingConfig {
   double rolling_shutter_readout_ms = -1.0;
   bool rolling_shutter_online = false;
   double rolling_shutter_online_max_sigma_ms = 1.0;
+  // slam/persistent_pose: a walker's points do not stay matched for seconds under a pose held
+  // by the static structure; what has stayed put that long is the static structure.
+  double persistent_point_age_s = 2.0;
+  int persistent_min_matches = 30;
   template <class V>
   void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored",
@@ -84,6 +88,14 @@ struct TrackingConfig {
     v("rolling_shutter_online", rolling_shutter_online,
       "re-time keypoints with the readout estimated online from the tracking residuals "
       "(stats.json rolling_shutter) instead of rolling_shutter_readout_ms, once it is settled");
+    v("persistent_point_age_s", persistent_point_age_s,
+      "with dynamics on, a frame's pose is found on matches to map points mapped at least this "
+      "long ago (s) when there are persistent_min_matches of them, and the other matches are "
+      "judged against it; 0 = off",
+      Range{0, 3600});
+    v("persistent_min_matches", persistent_min_matches,
+      "persistent matches needed to pose the frame on them (else all matches pose it)",
+      Range{6, 100000});
     v("rolling_shutter_online_max_sigma_ms", rolling_shutter_online_max_sigma_ms,
       "the online readout estimate is used once its standard error (ms) is below this",
       Range{0, 100, Range::kOpenLow});
