@@ -39,8 +39,11 @@ PersistentPose optimizePoseOnPersistentPoints(Frame& frame, const TrackingConfig
   const PoseCamera camera = poseCamera(*frame.features.camera);
   std::vector<uint8_t> rejected(frame.size(), 0);
   for (int i = 0; i < frame.size(); ++i) {
-    if (persistent[i]) rejected[i] = outlier[i];
-    if (!frame.map_points[i] || persistent[i]) continue;
+    if (persistent[i]) {
+      rejected[i] = outlier[i];
+      continue;
+    }
+    if (!frame.map_points[i]) continue;
     const PoseObservation obs = poseObservation(frame, i);
     const double threshold = obs.u_right >= 0.0 ? kChi2Stereo999 : kChi2Mono999;
     rejected[i] = reprojectionChi2(obs, camera, T_persistent) > threshold;
