@@ -21,8 +21,9 @@ extern char** environ;
 
 namespace dynanav::test {
 
-int runAndSignal(const std::vector<std::string>& args, int signal_number,
-                 std::chrono::milliseconds delay) {
+namespace {
+
+pid_t spawnCli(const std::vector<std::string>& args) {
   std::vector<std::string> argv_s = {DYNANAV_CLI};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -30,12 +31,40 @@ int runAndSignal(const std::vector<std::string>& args, int signal_number,
   argv.push_back(nullptr);
   pid_t pid = 0;
   if (posix_spawn(&pid, DYNANAV_CLI, nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  return pid;
+}
+
+int exitCode(int status) {
+  return WIFEXITED(status) ? WEXITSTATUS(status)
+                           : -1000 - (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+}  // namespace
+
+int runAndSignal(const std::vector<std::string>& args, int signal_number,
+                 std::chrono::milliseconds delay) {
+  const pid_t pid = spawnCli(args);
+  if (pid < 0) return -1;
   std::this_thread::sleep_for(delay);
   kill(pid, signal_number);
   int status = 0;
   waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status)
-                           : -1000 - (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  return exitCode(status);
+}
+
+int runAndSignalWhen(const std::vector<std::string>& args, int signal_number,
+                     const std::function<bool()>& ready, std::chrono::milliseconds timeout) {
+  const pid_t pid = spawnCli(args);
+  if (pid < 0) return -1;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  int status = 0;
+  while (!ready() && std::chrono::steady_clock::now() < deadline) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return exitCode(status);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  kill(pid, signal_number);
+  waitpid(pid, &status, 0);
+  return exitCode(status);
 }
 
 fs::path sharedDir() {

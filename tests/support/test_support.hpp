@@ -26,6 +26,11 @@ int runCli(const std::string& args, std::string* output = nullptr);
 /// code, -1 when it could not start, -1000 - N when signal N ended it.
 int runAndSignal(const std::vector<std::string>& args, int signal_number,
                  std::chrono::milliseconds delay);
+/// As above, but the signal goes once `ready()` holds (polled every 50 ms; a loaded machine
+/// starts the CLI late, so a fixed delay can come before it has written anything), or at
+/// `timeout`; no signal when the process has already ended.
+int runAndSignalWhen(const std::vector<std::string>& args, int signal_number,
+                     const std::function<bool()>& ready, std::chrono::milliseconds timeout);
 /// ATE RMSE (m) of `est` against `gt` as the project's own `dynanav eval --json` computes it;
 /// a failed evaluation is reported as a test failure and returns 1e9.
 double ateRmse(const std::filesystem::path& gt, const std::filesystem::path& est);

@@ -179,15 +179,23 @@ TEST_F(AudioCli, UnknownVoiceIsBadInputNamingTheKey) {
 TEST_F(AudioCli, InterruptedAndKilledRunsLeaveAPlayableWav) {
   for (const int signal_number : {SIGINT, SIGKILL}) {
     const fs::path out = dir_ / ("signal_" + std::to_string(signal_number));
-    // Paced at 30 Hz, 4 passes of the 60 frames take 8 s: the signal comes in the middle.
-    const int code =
-        test::runAndSignal({"run", (dir_ / "seq").string(), "--out", out.string(), "--segmenter",
-                            "masks", "--realtime", "--passes", "4", "--audio", "--quiet"},
-                           signal_number, std::chrono::milliseconds(3500));
+    // Paced at 30 Hz, 4 passes of the 60 frames take 8 s: the signal comes once a second of
+    // audio is on disk (48 kHz, 4 bytes per stereo frame, after the 44-byte header), so a
+    // loaded machine that starts the run late does not signal it before it has written any.
+    const fs::path wav_path = out / "feedback.wav";
+    const auto one_second_written = [&wav_path] {
+      std::error_code error;
+      const auto size = fs::file_size(wav_path, error);
+      return !error && size >= 44 + 48000 * 4;
+    };
+    const int code = test::runAndSignalWhen(
+        {"run", (dir_ / "seq").string(), "--out", out.string(), "--segmenter", "masks",
+         "--realtime", "--passes", "4", "--audio", "--quiet"},
+        signal_number, one_second_written, std::chrono::seconds(60));
     if (signal_number == SIGINT) {
       EXPECT_EQ(code, 130);
     }
-    const test::Wav wav = test::readWav(out / "feedback.wav");
+    const test::Wav wav = test::readWav(wav_path);
     SCOPED_TRACE("signal " + std::to_string(signal_number));
     ASSERT_EQ(wav.rate_hz, 48000) << "feedback.wav unreadable";
     EXPECT_GT(wav.durationS(), 0.5);
