@@ -43,13 +43,8 @@ int exitCode(int status) {
 
 int runAndSignal(const std::vector<std::string>& args, int signal_number,
                  std::chrono::milliseconds delay) {
-  const pid_t pid = spawnCli(args);
-  if (pid < 0) return -1;
-  std::this_thread::sleep_for(delay);
-  kill(pid, signal_number);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return exitCode(status);
+  return runAndSignalWhen(
+      args, signal_number, [] { return false; }, delay);
 }
 
 int runAndSignalWhen(const std::vector<std::string>& args, int signal_number,

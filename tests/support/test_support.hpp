@@ -22,8 +22,9 @@ std::filesystem::path scratchDir(const std::string& tag);
 void removeScratchDir(const std::filesystem::path& dir);
 /// Runs `<build>/bin/dynanav ARGS`, capturing stdout+stderr into `output`; returns the exit code.
 int runCli(const std::string& args, std::string* output = nullptr);
-/// Starts `<build>/bin/dynanav ARGS`, sends `signal_number` after `delay` and waits: the exit
-/// code, -1 when it could not start, -1000 - N when signal N ended it.
+/// Starts `<build>/bin/dynanav ARGS`, sends `signal_number` after `delay` (none if it has ended
+/// by then) and waits: the exit code, -1 when it could not start, -1000 - N when signal N ended
+/// it.
 int runAndSignal(const std::vector<std::string>& args, int signal_number,
                  std::chrono::milliseconds delay);
 /// As above, but the signal goes once `ready()` holds (polled every 50 ms; a loaded machine
