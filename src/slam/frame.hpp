@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/se3.hpp"
+#include "slam/depth_surface.hpp"
 #include "slam/features.hpp"
 #include "slam/map_point.hpp"
 
@@ -17,6 +18,11 @@ struct Frame {
   SE3 T_camera_world = SE3::Identity();
   std::vector<MapPointPtr> map_points;  ///< per keypoint
   std::vector<uint8_t> outlier;         ///< per keypoint, set by pose optimisation
+  /// This frame's static depth (empty: not kept), and its reference keyframe's static depth
+  /// samples placed in the world by that keyframe's pose (empty: none to align with): pose
+  /// evidence beside the keypoints (slam/depth_surface.hpp).
+  DepthSurface depth_surface;
+  std::vector<Vec3> depth_reference_world;
 
   Frame() = default;
   Frame(uint64_t id_, double stamp, Features f) : id(id_), stamp_s(stamp), features(std::move(f)) {

@@ -43,7 +43,15 @@ int optimizePoseOver(const Frame& frame, const TrackingConfig& config,
   options.iterations_per_round = config.pose_iterations;
   T_camera_world = frame.T_camera_world;
   std::vector<uint8_t> used_outlier;
-  const int inliers = optimizePose(observations, camera, options, T_camera_world, used_outlier);
+  DepthAlignment depth;
+  if (config.depth_alignment_samples > 0.0) {
+    depth.surface = &frame.depth_surface;
+    depth.points_world = &frame.depth_reference_world;
+    depth.effective_samples = config.depth_alignment_samples;
+    depth.min_sigma_m = config.depth_alignment_min_sigma_m;
+  }
+  const int inliers =
+      optimizePose(observations, camera, options, T_camera_world, used_outlier, depth);
   for (size_t k = 0; k < keypoint_of.size(); ++k) outlier[keypoint_of[k]] = used_outlier[k];
   return inliers;
 }

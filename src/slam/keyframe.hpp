@@ -63,6 +63,9 @@ class KeyFrame : public std::enable_shared_from_this<KeyFrame> {
   /// How this keyframe's fitted pose moved per second of readout error, (rho, phi) on the left
   /// (ReadoutEvidence::pose_shift_per_s): its map points moved with it.
   Eigen::Matrix<double, 6, 1> pose_shift_per_readout = Eigen::Matrix<double, 6, 1>::Zero();
+  /// Issue 18: its frame's static depth, sampled (camera frame; slam/depth_surface.hpp). Frames
+  /// that take it as their reference are also posed by it, placed in the world by its pose.
+  std::vector<Vec3> depth_samples_camera;
 
   // Place recognition (issue 4, loop/relocalisation): bag of words and direct index, computed
   // once when the keyframe enters the keyframe database; loop edges join the two keyframes of a

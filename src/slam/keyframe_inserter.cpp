@@ -15,24 +15,29 @@ bool needNewKeyFrame(const Frame& frame, const KeyFrame& reference, const KeyFra
   int tracked_close = 0, untracked_close = 0;
   for (int i = 0; i < frame.size(); ++i) {
     if (f.depth_m[i] <= 0.f || f.depth_m[i] >= close_depth || !f.usable[i]) continue;
-    if (frame.map_points[i] && !frame.outlier[i]) ++tracked_close;
-    else ++untracked_close;
+    if (frame.map_points[i] && !frame.outlier[i])
+      ++tracked_close;
+    else
+      ++untracked_close;
   }
   const bool need_close = tracked_close < config.keyframe_close_tracked_min &&
                           untracked_close > config.keyframe_close_untracked_max;
   const double ref_ratio = in.map_keyframes < 2 ? 0.4 : config.keyframe_ref_ratio;
-  const bool c1a = in.frames_since_last_keyframe >= static_cast<uint64_t>(config.keyframe_max_frames);
+  const bool c1a =
+      in.frames_since_last_keyframe >= static_cast<uint64_t>(config.keyframe_max_frames);
   const bool c1b = in.mapper_idle;
   const bool c1c = in.matches_inliers < reference_matches * 0.25 || need_close;
-  const bool c2 = (in.matches_inliers < reference_matches * ref_ratio || need_close) && in.matches_inliers > 15;
+  const bool c2 =
+      (in.matches_inliers < reference_matches * ref_ratio || need_close) && in.matches_inliers > 15;
   if (!((c1a || c1b || c1c) && c2)) return false;
   // With mapping busy ORB-SLAM2 still queues RGB-D keyframes while the queue is short.
   return in.mapper_idle || in.mapper_accepts;
 }
 
 KeyFramePtr createKeyFrame(Frame& frame, Map& map, const TrackingConfig& config) {
-  auto kf = std::make_shared<KeyFrame>(map.nextKeyFrameId(), frame.id, frame.stamp_s, frame.features,
-                                       frame.T_camera_world, frame.map_points);
+  auto kf = std::make_shared<KeyFrame>(map.nextKeyFrameId(), frame.id, frame.stamp_s,
+                                       frame.features, frame.T_camera_world, frame.map_points);
+  kf->depth_samples_camera = surfaceSamples(frame.depth_surface, config.depth_alignment_step_px);
   map.addKeyFrame(kf);
   const Features& f = frame.features;
   std::vector<std::pair<float, int>> by_depth;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/se3.hpp"
+#include "slam/depth_surface.hpp"
 
 namespace dynanav {
 
@@ -34,14 +35,42 @@ struct PoseOptimizerOptions {
   int iterations_per_round = 10;
 };
 
+/// Static depth as evidence beside the keypoints (slam/depth_surface.hpp): the last frame's static
+/// samples, placed in the world by its pose, against this frame's surface. Each enters as its
+/// point-to-plane distance over the depth noise at its range, with the same robust loss and
+/// per-round outlier classification as the keypoints (chi2, 1 dof, 95 %). The samples' noise is
+/// not independent (a structured-light sensor's errors span patches of pixels, and the reference
+/// keyframe's own pose error is shared by all of them), so together they weigh as
+/// `effective_samples` independent ones at most. The depth joins only where the keypoints alone
+/// leave the camera's position loose: more than `min_sigma_m` along some direction.
+struct DepthAlignment {
+  const DepthSurface* surface = nullptr;
+  const std::vector<Vec3>* points_world = nullptr;
+  double effective_samples = 0.0;
+  double min_sigma_m = 0.0;
+  double max_distance_m = 0.2;  ///< a sample further from the surface is not associated
+
+  [[nodiscard]] bool active() const {
+    return surface && !surface->empty() && points_world && !points_world->empty() &&
+           effective_samples > 0.0;
+  }
+};
+
 /// chi2 = e^T Omega e of an observation at pose T_cw: its squared reprojection error over the
 /// level's variance, (u, v) and with depth u_right (infinity behind the camera).
 double reprojectionChi2(const PoseObservation& obs, const PoseCamera& camera, const SE3& T_cw);
 
+/// The largest standard deviation (m) of the camera's position that the inlier observations
+/// leave at T_camera_world (from their information matrix at the levels' sigmas; infinity when
+/// they do not fix it).
+double loosestTranslationSigmaM(const std::vector<PoseObservation>& observations,
+                                const std::vector<uint8_t>& outlier, const PoseCamera& camera,
+                                const SE3& T_camera_world);
+
 /// Refines T_camera_world in place; `outlier` (resized to observations) gets the final
-/// classification. Returns the number of inliers.
+/// classification. Returns the number of inliers (keypoints; depth samples are not counted).
 int optimizePose(const std::vector<PoseObservation>& observations, const PoseCamera& camera,
                  const PoseOptimizerOptions& options, SE3& T_camera_world,
-                 std::vector<uint8_t>& outlier);
+                 std::vector<uint8_t>& outlier, const DepthAlignment& depth = {});
 
 }  // namespace dynanav

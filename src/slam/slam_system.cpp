@@ -17,11 +17,15 @@
 namespace dynanav {
 
 namespace {
-/// Posing frames on the persistent map is part of the dynamic-scene handling: `--dynamic off`
-/// is the plain ORB-SLAM2 baseline the dynamic modes are compared with.
+/// Posing frames on the persistent map and on the static depth outside the masks are part of
+/// the dynamic-scene handling: `--dynamic off` is the plain ORB-SLAM2 baseline the dynamic modes
+/// are compared with. The depth needs a segmenter: without masks a crowd's depth is most of the
+/// view and the alignment follows it (Bonn crowd `--segmenter none`: ATE 0.030 -> 0.20 m,
+/// docs/slam.md "Session 28"), where keypoints have their age to tell the static structure by.
 TrackingConfig trackingFor(const Config& config) {
   TrackingConfig tracking = config.tracking;
   if (!config.run.dynamic) tracking.persistent_point_age_s = 0.0;
+  if (!config.run.dynamic || config.run.segmenter == "none") tracking.depth_alignment_samples = 0.0;
   return tracking;
 }
 }  // namespace
@@ -35,6 +39,8 @@ SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageT
       mapping_(
           std::make_unique<MappingStage>(*map_, config.mapping, !config.run.deterministic, timers)),
       tracker_(std::make_unique<Tracker>(*map_, *mapping_, trackingFor(config))) {
+  if (trackingFor(config).depth_alignment_samples > 0.0)
+    surfaces_ = std::make_unique<DepthSurfaceMaker>(camera, config.tracking.depth_max_m);
   setUpPlaceRecognition();
 }
 
@@ -72,9 +78,11 @@ Frame SlamSystem::extract(const cv::Mat& grey, const cv::Mat& depth_m, double st
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
   extractor_->extract(grey, allowed, keypoints, descriptors);
-  return Frame(next_frame_id_++, stamp_s,
-               makeFeatures(std::move(keypoints), descriptors, depth_m,
-                            config_.tracking.depth_max_m, camera_, scales_));
+  Frame frame(next_frame_id_++, stamp_s,
+              makeFeatures(std::move(keypoints), descriptors, depth_m, config_.tracking.depth_max_m,
+                           camera_, scales_));
+  if (surfaces_) frame.depth_surface = surfaces_->make(depth_m, allowed);
+  return frame;
 }
 
 InitialPose SlamSystem::initialPose(Frame& frame) {

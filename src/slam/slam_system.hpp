@@ -12,6 +12,7 @@
 #include "core/config.hpp"
 #include "core/timer.hpp"
 #include "io/trajectory.hpp"
+#include "slam/depth_surface.hpp"
 #include "slam/frame.hpp"
 #include "slam/keypoint_drop.hpp"
 #include "slam/local_mapper.hpp"
@@ -104,6 +105,7 @@ class SlamSystem {
   std::shared_ptr<const PinholeCamera> camera_;
   std::shared_ptr<const PyramidScales> scales_;
   std::unique_ptr<OrbExtractor> extractor_;
+  std::unique_ptr<DepthSurfaceMaker> surfaces_;  ///< when depth poses frames too
   std::unique_ptr<Map> map_;
   std::unique_ptr<MappingStage> mapping_;
   std::unique_ptr<Tracker> tracker_;

@@ -23,6 +23,7 @@ bool Tracker::initialise(Frame& frame, TrackOutcome& outcome) {
   frame.clearMatches();
   auto kf = std::make_shared<KeyFrame>(map_.nextKeyFrameId(), frame.id, frame.stamp_s, f,
                                        frame.T_camera_world, frame.map_points);
+  kf->depth_samples_camera = surfaceSamples(frame.depth_surface, config_.depth_alignment_step_px);
   map_.addKeyFrame(kf);
   for (int i = 0; i < frame.size(); ++i) {
     if (!f.hasDepth(i) || !f.usable[i]) continue;
@@ -71,6 +72,20 @@ void Tracker::updateLastFrame() {
     ++points;
     if (depth > close_depth && points > config_.new_points_min) break;
   }
+}
+
+void Tracker::placeReferenceDepth(Frame& frame) const {
+  frame.depth_reference_world.clear();
+  if (!(config_.depth_alignment_samples > 0.0)) return;
+  // The reference keyframe's depth, not the last frame's: its pose is held by the map (local
+  // bundle adjustment), so no frame-to-frame drift builds up along what the depth fixes, and in
+  // the frames since it was taken a walker has moved far enough that its depth no longer lies on
+  // the surface where it stood (Bonn crowd without masks, the last frame's depth: the pose
+  // followed the walkers, ATE 0.030 -> 0.276 m; docs/slam.md).
+  const SE3& T_world_reference = reference_->T_world_camera();
+  frame.depth_reference_world.reserve(reference_->depth_samples_camera.size());
+  for (const Vec3& p : reference_->depth_samples_camera)
+    frame.depth_reference_world.push_back(T_world_reference * p);
 }
 
 int Tracker::retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read,
@@ -150,6 +165,7 @@ InitialPose Tracker::initialPose(Frame& frame) {
   }
   if (!initial.was_lost) {
     updateLastFrame();
+    placeReferenceDepth(frame);
     if (has_velocity_) ok = trackWithMotionModel(frame, last_, velocity_, config_);
     if (!ok) ok = trackReferenceKeyFrame(frame, *reference_, last_.T_camera_world, config_);
   } else {

@@ -78,6 +78,9 @@ class Tracker {
   /// Re-anchors the last frame on its (possibly optimised) reference keyframe and gives it
   /// temporary points from depth so the motion model has close points to match.
   void updateLastFrame();
+  /// The reference keyframe's static depth samples, placed in the world by its pose, for
+  /// `frame`'s pose fits (slam/depth_surface.hpp).
+  void placeReferenceDepth(Frame& frame) const;
   void rememberAsLast(const Frame& frame);
   /// Re-times the frame's keypoints (from `as_read`) with its own motion since the last frame
   /// and re-optimises its pose; returns the local-map inliers left.

@@ -39,6 +39,10 @@ struct TrackingConfig {
   // by the static structure; what has stayed put that long is the static structure.
   double persistent_point_age_s = 2.0;
   int persistent_min_matches = 30;
+  // slam/depth_surface: the static depth outside the masks as pose evidence beside the keypoints.
+  double depth_alignment_samples = 100.0;
+  int depth_alignment_step_px = 8;
+  double depth_alignment_min_sigma_m = 0.01;
   template <class V>
   void visit(V&& v) {
     v("depth_max_m", depth_max_m, "depth samples beyond this distance (m) are ignored",
@@ -96,6 +100,17 @@ struct TrackingConfig {
     v("persistent_min_matches", persistent_min_matches,
       "persistent matches needed to pose the frame on them (else all matches pose it)",
       Range{6, 100000});
+    v("depth_alignment_samples", depth_alignment_samples,
+      "the last frame's static depth samples (outside every mask) also pose the frame, by their "
+      "point-to-plane distance to its depth, weighing together as at most this many independent "
+      "samples; 0 = off",
+      Range{0, 100000});
+    v("depth_alignment_min_sigma_m", depth_alignment_min_sigma_m,
+      "the depth joins a pose fit only where the keypoints alone leave the camera's position "
+      "looser than this standard deviation (m) along some direction",
+      Range{0, 10});
+    v("depth_alignment_step_px", depth_alignment_step_px,
+      "grid step of those samples, in pixels of the half-resolution depth", Range{1, 100});
     v("rolling_shutter_online_max_sigma_ms", rolling_shutter_online_max_sigma_ms,
       "the online readout estimate is used once its standard error (ms) is below this",
       Range{0, 100, Range::kOpenLow});
