@@ -52,6 +52,28 @@ cv::Mat renderDepth(const PinholeCamera& camera, const SE3& T_camera_world,
   return depth;
 }
 
+/// A keypoint's observation of a world point from T_camera_world: pixel noise of `noise_px`, and
+/// depth (the virtual right coordinate) when `with_depth`.
+PoseObservation observe(const PinholeCamera& camera, const SE3& T_camera_world, const Vec3& p_world,
+                        double noise_px, std::mt19937& rng, bool with_depth) {
+  std::normal_distribution<double> noise(0.0, noise_px);
+  const Vec3 p_c = T_camera_world * p_world;
+  PoseObservation obs;
+  obs.p_world = p_world;
+  obs.u = camera.fx * p_c.x() / p_c.z() + camera.cx + (noise_px > 0.0 ? noise(rng) : 0.0);
+  obs.v = camera.fy * p_c.y() / p_c.z() + camera.cy + (noise_px > 0.0 ? noise(rng) : 0.0);
+  if (with_depth) obs.u_right = obs.u - camera.bf() / p_c.z() + (noise_px > 0.0 ? noise(rng) : 0.0);
+  return obs;
+}
+
+/// A surface's samples placed in the world from the camera pose it was seen at.
+std::vector<Vec3> samplesInWorld(const DepthSurface& surface, const SE3& T_camera_world) {
+  std::vector<Vec3> out;
+  const SE3 T_world_camera = T_camera_world.inverse();
+  for (const Vec3& p : surfaceSamples(surface, 8)) out.push_back(T_world_camera * p);
+  return out;
+}
+
 PinholeCamera undistortedCamera() {
   PinholeCamera camera;
   camera.fx = camera.fy = 525.0;
@@ -116,27 +138,18 @@ TEST(DepthSurface, DepthHoldsAPoseAlongTheDirectionFewKeypointsLeaveWeak) {
   const SE3 T_true = makeSE3(Quat(Eigen::AngleAxisd(0.05, Vec3::UnitY())), Vec3(0.1, 0.0, 0.2));
   const SE3 T_last = makeSE3(Quat(Eigen::AngleAxisd(0.04, Vec3::UnitY())), Vec3(0.09, 0.0, 0.19));
   std::mt19937 rng(11);
-  std::normal_distribution<double> pixel_noise(0.0, 0.7);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::vector<PoseObservation> observations;
   const SE3 T_wc = T_true.inverse();
   for (int i = 0; i < 40; ++i) {
     // On the back wall (world z = 4), in front of the true camera.
     const Vec3 p_world(0.1 + (u01(rng) - 0.5) * 0.6, (u01(rng) - 0.5) * 0.4, 4.0);
-    const Vec3 p_c = T_true * p_world;
-    PoseObservation obs;
-    obs.p_world = p_world;
-    obs.u = camera.fx * p_c.x() / p_c.z() + camera.cx + pixel_noise(rng);
-    obs.v = camera.fy * p_c.y() / p_c.z() + camera.cy + pixel_noise(rng);
-    obs.u_right = obs.u - pose_camera.bf / p_c.z() + pixel_noise(rng);
-    observations.push_back(obs);
+    observations.push_back(observe(camera, T_true, p_world, 0.7, rng, true));
   }
   const DepthSurfaceMaker maker(camera, 8.0);
   const DepthSurface current = maker.make(renderDepth(camera, T_true, room(), &rng), {});
-  std::vector<Vec3> last_world;
-  const SE3 T_world_last = T_last.inverse();
-  for (const Vec3& p : surfaceSamples(maker.make(renderDepth(camera, T_last, room(), &rng), {}), 8))
-    last_world.push_back(T_world_last * p);
+  const std::vector<Vec3> last_world =
+      samplesInWorld(maker.make(renderDepth(camera, T_last, room(), &rng), {}), T_last);
   DepthAlignment depth;
   depth.surface = &current;
   depth.points_world = &last_world;
@@ -167,24 +180,16 @@ TEST(DepthSurface, DepthStaysOutWhereTheKeypointsHoldThePose) {
   const PoseCamera pose_camera{camera.fx, camera.fy, camera.cx, camera.cy, camera.bf()};
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  std::normal_distribution<double> pixel_noise(0.0, 0.7);
   std::vector<PoseObservation> observations;
   for (int i = 0; i < 200; ++i) {
     const Vec3 p((u01(rng) - 0.5) * 3.0, (u01(rng) - 0.5) * 2.0, 1.0 + 3.0 * u01(rng));
-    PoseObservation obs;
-    obs.p_world = p;
-    obs.u = camera.fx * p.x() / p.z() + camera.cx + pixel_noise(rng);
-    obs.v = camera.fy * p.y() / p.z() + camera.cy + pixel_noise(rng);
-    obs.u_right = obs.u - pose_camera.bf / p.z() + pixel_noise(rng);
-    observations.push_back(obs);
+    observations.push_back(observe(camera, SE3::Identity(), p, 0.7, rng, true));
   }
   const DepthSurfaceMaker maker(camera, 8.0);
-  const SE3 T_side = makeSE3(Quat::Identity(), Vec3(0.0, 0.0, 0.02));
-  const DepthSurface current = maker.make(renderDepth(camera, T_side, room()), {});
-  std::vector<Vec3> reference;
-  for (const Vec3& p :
-       surfaceSamples(maker.make(renderDepth(camera, SE3::Identity(), room()), {}), 8))
-    reference.push_back(p);
+  const SE3 T_back = makeSE3(Quat::Identity(), Vec3(0.0, 0.0, 0.02));
+  const DepthSurface current = maker.make(renderDepth(camera, T_back, room()), {});
+  const std::vector<Vec3> reference =
+      samplesInWorld(maker.make(renderDepth(camera, SE3::Identity(), room()), {}), SE3::Identity());
   DepthAlignment depth{&current, &reference, 100.0, 0.01};
   SE3 T_points = makeSE3(Quat::Identity(), Vec3(0.01, 0.0, 0.0));
   SE3 T_gated = T_points, T_always = T_points;
@@ -207,11 +212,7 @@ TEST(DepthSurface, NoDepthSamplesLeaveThePoseToTheKeypoints) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (int i = 0; i < 60; ++i) {
     const Vec3 p((u01(rng) - 0.5) * 3.0, (u01(rng) - 0.5) * 2.0, 1.0 + 3.0 * u01(rng));
-    PoseObservation obs;
-    obs.p_world = p;
-    obs.u = camera.fx * p.x() / p.z() + camera.cx;
-    obs.v = camera.fy * p.y() / p.z() + camera.cy;
-    observations.push_back(obs);
+    observations.push_back(observe(camera, SE3::Identity(), p, 0.0, rng, false));
   }
   const DepthSurface empty_surface;
   const std::vector<Vec3> none;
