@@ -25,6 +25,12 @@ std::optional<double> depthResidual(const DepthAlignment& depth, const Vec3& p_w
   return s->normal_camera.dot(p - s->p_camera) / depthSigmaM(s->p_camera.z());
 }
 
+/// The factor that rescales a residual of squared norm `s` so that its squared norm becomes the
+/// Huber cost with threshold `delta` (1 inside it).
+double huberScale(double s, double delta) {
+  return s > delta * delta ? std::sqrt((2.0 * delta * std::sqrt(s) - delta * delta) / s) : 1.0;
+}
+
 /// The residuals of one round for Ceres' TinySolver (dense Levenberg-Marquardt without the
 /// general solver's per-problem set-up, which dominated the cost of this 6-parameter problem).
 /// Parameters: a left update delta = (omega, t) of the round's starting pose,
@@ -84,13 +90,9 @@ class PoseResiduals {
       double e[3] = {item.weight * (item.u - u), item.weight * (item.v - v), 0.0};
       if (stereo) e[2] = item.weight * (item.u_right - (u - camera_.bf * inv_z));
       const int dims = stereo ? 3 : 2;
-      double scale = 1.0;
-      if (robust_) {
-        const double s = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-        const double delta_h = std::sqrt(stereo ? kChi2Stereo : kChi2Mono);
-        if (s > delta_h * delta_h)
-          scale = std::sqrt((2.0 * delta_h * std::sqrt(s) - delta_h * delta_h) / s);
-      }
+      const double scale = robust_ ? huberScale(e[0] * e[0] + e[1] * e[1] + e[2] * e[2],
+                                                std::sqrt(stereo ? kChi2Stereo : kChi2Mono))
+                                   : 1.0;
       for (int k = 0; k < dims; ++k) residuals[item.row + k] = scale * e[k];
       if (!jacobian) continue;
       // d(residual)/dp = -weight * d(projection)/dp; dp/d(omega) = -[p]x, dp/dt = I (left update).
@@ -113,12 +115,7 @@ class PoseResiduals {
       const Vec3 p = R * plane.p0 + t;
       const double w = depth_weight_ * plane.inv_sigma;
       double e = w * (plane.normal.dot(p) - plane.offset);
-      double scale = 1.0;
-      if (robust_) {
-        const double delta_h = std::sqrt(kChi2Depth) * depth_weight_;
-        if (std::abs(e) > delta_h)
-          scale = std::sqrt(2.0 * delta_h * std::abs(e) - delta_h * delta_h) / std::abs(e);
-      }
+      const double scale = robust_ ? huberScale(e * e, std::sqrt(kChi2Depth) * depth_weight_) : 1.0;
       residuals[row] = scale * e;
       if (!jacobian) continue;
       // dp/d(omega) = -[p]x, dp/dt = I: n^T [-[p]x | I] = [(p x n)^T | n^T].
