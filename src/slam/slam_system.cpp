@@ -21,7 +21,8 @@ namespace {
 /// the dynamic-scene handling: `--dynamic off` is the plain ORB-SLAM2 baseline the dynamic modes
 /// are compared with. The depth needs a segmenter: without masks a crowd's depth is most of the
 /// view and the alignment follows it (Bonn crowd `--segmenter none`: ATE 0.030 -> 0.20 m,
-/// docs/slam.md "Session 28"), where keypoints have their age to tell the static structure by.
+/// docs/slam.md "Static depth where the keypoints are loose"), where keypoints have their age to
+/// tell the static structure by.
 TrackingConfig trackingFor(const Config& config) {
   TrackingConfig tracking = config.tracking;
   if (!config.run.dynamic) tracking.persistent_point_age_s = 0.0;
