@@ -141,14 +141,19 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
 
 namespace {
 
-/// The torso centre over the soles at row bottom_px on the plane (n, offset); none if the rays
-/// do not meet the floor ahead of the camera or the centre falls below it.
+/// The torso centre over the feet whose nearest outline point is at row bottom_px on the plane
+/// (n, offset); none if the rays do not meet the floor ahead of the camera or the centre falls
+/// below it.
 std::optional<Vec3> torsoOverSoles(const PersonExtent& extent, double bottom_px,
-                                   const PinholeCamera& camera, const Vec3& n, double offset_m) {
+                                   const PinholeCamera& camera, const Vec3& n, double offset_m,
+                                   double foot_lead_m, double outline_height_m) {
   const Vec3 r_soles = axisRay(extent, bottom_px, camera);
   const double along = n.dot(r_soles);
-  if (!(offset_m < 0.0) || !(along < 0.0)) return std::nullopt;
-  const Vec3 soles = (offset_m / along) * r_soles;
+  const double outline_offset_m = offset_m + outline_height_m;  // the plane the outline is in
+  if (!(outline_offset_m < 0.0) || !(along < 0.0)) return std::nullopt;
+  const Vec3 front = (outline_offset_m / along) * r_soles;
+  const Vec3 level = (r_soles - along * n).normalized();  // away from the camera, along the floor
+  const Vec3 soles = front + foot_lead_m * level - outline_height_m * n;  // the axis, on the floor
   const Vec3 r_torso =
       axisRay(extent, extent.top_px + kTorsoCentreBelowTop * (bottom_px - extent.top_px), camera);
   // c·r_torso = soles + h·n in least squares: the torso on the vertical through the soles.
@@ -167,7 +172,8 @@ std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const CameraFloor& floor,
                                                  const FloorContactOptions& options) {
   const Vec3 n = floor.normal_camera.normalized();
-  const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m);
+  const double lead = options.foot_lead_m, e = options.foot_outline_height_m;
+  const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m, lead, e);
   if (!centre) return std::nullopt;
   HeightRange out;
   out.p_camera = *centre;
@@ -175,7 +181,8 @@ std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
   // Relative range errors by finite differences: the soles' row (new each frame) and the
   // floor's height and tilt toward the camera (persistent: the scale).
   const auto relativeShift = [&](double bottom_px, const Vec3& normal, double offset_m) {
-    const auto moved = torsoOverSoles(extent, bottom_px, camera, normal.normalized(), offset_m);
+    const auto moved =
+        torsoOverSoles(extent, bottom_px, camera, normal.normalized(), offset_m, lead, e);
     return moved ? std::abs(moved->norm() - out.range_m) / out.range_m : 1.0;
   };
   const double pixels_rel =

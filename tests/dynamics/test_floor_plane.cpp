@@ -90,26 +90,36 @@ TEST(CameraFloor, TheAverageLeavesOutAFitFarFromTheFloor) {
 }
 
 TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
-  // A 1.55 m walker 10 m ahead on the floor of a camera pitched down 5 degrees: the stature
-  // prior (1.70 m) reads it ~9 % near; its soles on the floor read it exactly.
+  // A 1.55 m walker 10 m ahead on the floor of a camera pitched down 5 degrees, facing the
+  // camera: the stature prior (1.70 m) reads it ~9 % near; its soles on the floor read it
+  // within a few centimetres, the lowest row being its toe tips 0.19 m in front of its axis.
   const PinholeCamera c = camera();
   const CameraFloor floor = trueFloor();
   const Vec3 up = floor.normal_camera;
   const double stature_m = 1.55;
-  const Vec3 ahead = Vec3(0.0, 0.0, 1.0) - up * up.z();  // level direction ahead of the camera
-  const Vec3 soles = -kCameraHeightM * up + 10.0 * ahead.normalized();
+  const Vec3 ahead = (Vec3(0.0, 0.0, 1.0) - up * up.z()).normalized();  // level, ahead
+  const Vec3 soles = -kCameraHeightM * up + 10.0 * ahead;
   ASSERT_NEAR(up.dot(soles), floor.offset_m, 1e-9);
+  const FloorContactOptions options;
+  const Vec3 toes = soles - options.foot_lead_m * ahead + options.foot_outline_height_m * up;
   const Vec3 crown = soles + stature_m * up;
   const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
   PersonExtent extent;
   extent.top_px = c.project(crown).y();
-  extent.bottom_px = c.project(soles).y();
+  extent.bottom_px = c.project(toes).y();
   extent.column_px = c.project(soles).x();
-  const auto contact = rangeFromFloorContact(extent, c, floor);
+  const auto contact = rangeFromFloorContact(extent, c, floor, options);
   ASSERT_TRUE(contact);
-  EXPECT_LT((contact->p_camera - torso).norm(), 0.02 * torso.norm());
+  EXPECT_LT((contact->p_camera - torso).norm(), 0.02);
   EXPECT_GT(contact->scale_sigma, 0.0);
   EXPECT_LT(contact->scale_sigma, 0.05);  // the floor's 2 cm and 0.1 degrees: ~1.5 % at 10 m
+  // Read as if the lowest row lay on the floor under the body's axis, it is near: by the toes'
+  // lead, less the 12 cm further that the toes' outline 2 cm up puts the ray's floor point.
+  FloorContactOptions on_the_axis;
+  on_the_axis.foot_lead_m = on_the_axis.foot_outline_height_m = 0.0;
+  const auto under_axis = rangeFromFloorContact(extent, c, floor, on_the_axis);
+  ASSERT_TRUE(under_axis);
+  EXPECT_LT(under_axis->range_m, torso.norm() - 0.05);
   const auto stature = rangeFromHeight(extent, c, up);
   ASSERT_TRUE(stature);
   EXPECT_GT((stature->p_camera - torso).norm(), 0.06 * torso.norm());
