@@ -167,12 +167,18 @@ std::optional<Vec3> torsoOverSoles(const PersonExtent& extent, double bottom_px,
 
 }  // namespace
 
+double footLeadM(const FloorContactOptions& options, std::optional<double> abs_cos) {
+  // The mean of |cos| over headings uniform in angle is 2 / pi.
+  const double c = abs_cos ? std::clamp(*abs_cos, 0.0, 1.0) : 2.0 / M_PI;
+  return options.foot_lead_side_m + (options.foot_lead_along_m - options.foot_lead_side_m) * c;
+}
+
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const CameraFloor& floor,
+                                                 const CameraFloor& floor, double foot_lead_m,
                                                  const FloorContactOptions& options) {
   const Vec3 n = floor.normal_camera.normalized();
-  const double lead = options.foot_lead_m, e = options.foot_outline_height_m;
+  const double lead = foot_lead_m, e = options.foot_outline_height_m;
   const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m, lead, e);
   if (!centre) return std::nullopt;
   HeightRange out;

@@ -106,10 +106,11 @@ struct FloorContactOptions {
   /// person of the stature prior's 1.70 m (Drillis and Contini's segment proportions: foot length
   /// 0.152 H = 0.26 m, the ankle, under the axis of a standing body, a quarter of it from the
   /// heel): facing the camera its toe tips, 0.19 m; walking away about as much, its trailing
-  /// heel (0.065 m) being half a stride back; only a person side on shows less (half a shoe's
-  /// width, 0.05 m). One value for all, the toes' (a lead that followed the heading measured
-  /// worse, docs/tracking.md "Session 29").
-  double foot_lead_m = 0.19;
+  /// heel (0.065 m) being half a stride back; side on half a shoe's width, 0.05 m. In between,
+  /// in proportion to |cos| of the angle between its heading and the viewing direction
+  /// (footLeadM).
+  double foot_lead_along_m = 0.19;
+  double foot_lead_side_m = 0.05;
   /// Height above the floor of that outline's lowest point seen from afar: a shoe's front is
   /// rounded, so the ray grazing it meets the floor a little beyond it.
   double foot_outline_height_m = 0.02;
@@ -127,17 +128,23 @@ struct FloorContactOptions {
   double tilt_sigma_deg = 0.1;
 };
 
+/// How far the nearest point of a person's feet lies in front of its body axis, toward the camera
+/// (FloorContactOptions): `abs_cos` is |cos| of the angle between the level direction it walks
+/// and the level viewing direction; none (standing, or its velocity not known yet): the mean over
+/// all headings.
+double footLeadM(const FloorContactOptions& options, std::optional<double> abs_cos);
+
 /// The torso centre of a person standing on `floor` whose soles appear at extent.bottom_px in
 /// column extent.column_px: the soles' ray meets the front of the nearest shoe (its outline's
-/// height above the floor), the body's axis stands options.foot_lead_m beyond it along the level
-/// viewing direction, and the torso centre lies on that axis, where it meets the ray through the
-/// torso's row (the share kTorsoCentreBelowTop of the silhouette below its top). No stature is
+/// height above the floor), the body's axis stands foot_lead_m (footLeadM) beyond it along the
+/// level viewing direction, and the torso centre lies on that axis, where it meets the ray through
+/// the torso's row (the share kTorsoCentreBelowTop of the silhouette below its top). No stature is
 /// assumed. The floor's errors (options) scale the solution about the camera centre: scale_sigma;
 /// the soles' row and the body axis are new each frame: cov_frame_camera. None when the soles' ray
 /// does not meet the floor ahead of the camera.
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const CameraFloor& floor,
+                                                 const CameraFloor& floor, double foot_lead_m,
                                                  const FloorContactOptions& options = {});
 
 /// Covariance (world, [p, v]) that a common scale error of relative sigma `scale_sigma` gives a

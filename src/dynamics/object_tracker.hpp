@@ -20,6 +20,7 @@
 #include "dynamics/first_motion.hpp"
 #include "dynamics/floor_plane.hpp"
 #include "dynamics/frame_dynamics.hpp"
+#include "dynamics/height_range.hpp"
 #include "dynamics/kalman_cv.hpp"
 #include "dynamics/object_points.hpp"
 #include "perception/instances.hpp"
@@ -129,6 +130,10 @@ class ObjectTracker {
   std::optional<Centre> measureCentre(const Track& track, const std::vector<Vec3>& p_camera,
                                       const Instance* instance,
                                       const ObjectTrackerInput& input) const;
+  /// How far the nearest point of a ranged person's feet lies in front of its body axis
+  /// (height_range.hpp, footLeadM), from the heading its filter's velocity gives.
+  [[nodiscard]] double footLead(const Track& track, const HeightRange& range,
+                                const ObjectTrackerInput& input) const;
   /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
   ObjectSample samplePixels(const Instance& instance, const ObjectTrackerInput& input) const;
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped,

@@ -89,6 +89,14 @@ TEST(CameraFloor, TheAverageLeavesOutAFitFarFromTheFloor) {
   EXPECT_NEAR(from_raised->offset_m, -kCameraHeightM - 0.1, 1e-6);
 }
 
+TEST(CameraFloor, TheFeetLeadTheBodyByTheToesAlongTheRayAndByTheShoesSideAcrossIt) {
+  const FloorContactOptions options;
+  EXPECT_DOUBLE_EQ(footLeadM(options, 1.0), 0.19);  // toward or away from the camera
+  EXPECT_DOUBLE_EQ(footLeadM(options, 0.0), 0.05);  // side on
+  EXPECT_DOUBLE_EQ(footLeadM(options, 0.5), 0.12);  // in proportion between
+  EXPECT_NEAR(footLeadM(options, std::nullopt), 0.05 + 0.14 * 2.0 / M_PI, 1e-12);  // unknown
+}
+
 TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   // A 1.55 m walker 10 m ahead on the floor of a camera pitched down 5 degrees, facing the
   // camera: the stature prior (1.70 m) reads it ~9 % near; its soles on the floor read it
@@ -101,14 +109,16 @@ TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   const Vec3 soles = -kCameraHeightM * up + 10.0 * ahead;
   ASSERT_NEAR(up.dot(soles), floor.offset_m, 1e-9);
   const FloorContactOptions options;
-  const Vec3 toes = soles - options.foot_lead_m * ahead + options.foot_outline_height_m * up;
+  const double lead_m = footLeadM(options, 1.0);  // walking at the camera
+  EXPECT_DOUBLE_EQ(lead_m, options.foot_lead_along_m);
+  const Vec3 toes = soles - lead_m * ahead + options.foot_outline_height_m * up;
   const Vec3 crown = soles + stature_m * up;
   const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
   PersonExtent extent;
   extent.top_px = c.project(crown).y();
   extent.bottom_px = c.project(toes).y();
   extent.column_px = c.project(soles).x();
-  const auto contact = rangeFromFloorContact(extent, c, floor, options);
+  const auto contact = rangeFromFloorContact(extent, c, floor, lead_m, options);
   ASSERT_TRUE(contact);
   EXPECT_LT((contact->p_camera - torso).norm(), 0.02);
   EXPECT_GT(contact->scale_sigma, 0.0);
@@ -116,8 +126,8 @@ TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   // Read as if the lowest row lay on the floor under the body's axis, it is near: by the toes'
   // lead, less the 12 cm further that the toes' outline 2 cm up puts the ray's floor point.
   FloorContactOptions on_the_axis;
-  on_the_axis.foot_lead_m = on_the_axis.foot_outline_height_m = 0.0;
-  const auto under_axis = rangeFromFloorContact(extent, c, floor, on_the_axis);
+  on_the_axis.foot_outline_height_m = 0.0;
+  const auto under_axis = rangeFromFloorContact(extent, c, floor, 0.0, on_the_axis);
   ASSERT_TRUE(under_axis);
   EXPECT_LT(under_axis->range_m, torso.norm() - 0.05);
   const auto stature = rangeFromHeight(extent, c, up);
