@@ -175,10 +175,11 @@ double footLeadM(const FloorContactOptions& options, std::optional<double> abs_c
 
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const CameraFloor& floor, double foot_lead_m,
+                                                 const CameraFloor& floor,
+                                                 std::optional<double> heading_abs_cos,
                                                  const FloorContactOptions& options) {
   const Vec3 n = floor.normal_camera.normalized();
-  const double lead = foot_lead_m, e = options.foot_outline_height_m;
+  const double lead = footLeadM(options, heading_abs_cos), e = options.foot_outline_height_m;
   const auto centre = torsoOverSoles(extent, extent.bottom_px, camera, n, floor.offset_m, lead, e);
   if (!centre) return std::nullopt;
   HeightRange out;

@@ -136,15 +136,16 @@ double footLeadM(const FloorContactOptions& options, std::optional<double> abs_c
 
 /// The torso centre of a person standing on `floor` whose soles appear at extent.bottom_px in
 /// column extent.column_px: the soles' ray meets the front of the nearest shoe (its outline's
-/// height above the floor), the body's axis stands foot_lead_m (footLeadM) beyond it along the
-/// level viewing direction, and the torso centre lies on that axis, where it meets the ray through
-/// the torso's row (the share kTorsoCentreBelowTop of the silhouette below its top). No stature is
-/// assumed. The floor's errors (options) scale the solution about the camera centre: scale_sigma;
-/// the soles' row and the body axis are new each frame: cov_frame_camera. None when the soles' ray
-/// does not meet the floor ahead of the camera.
+/// height above the floor), the body's axis stands the feet's lead (footLeadM, from
+/// `heading_abs_cos`) beyond it along the level viewing direction, and the torso centre lies on
+/// that axis, where it meets the ray through the torso's row (the share kTorsoCentreBelowTop of the
+/// silhouette below its top). No stature is assumed. The floor's errors (options) scale the
+/// solution about the camera centre: scale_sigma; the soles' row and the body axis are new each
+/// frame: cov_frame_camera. None when the soles' ray does not meet the floor ahead of the camera.
 std::optional<HeightRange> rangeFromFloorContact(const PersonExtent& extent,
                                                  const PinholeCamera& camera,
-                                                 const CameraFloor& floor, double foot_lead_m,
+                                                 const CameraFloor& floor,
+                                                 std::optional<double> heading_abs_cos,
                                                  const FloorContactOptions& options = {});
 
 /// Covariance (world, [p, v]) that a common scale error of relative sigma `scale_sigma` gives a

@@ -20,7 +20,6 @@
 #include "dynamics/first_motion.hpp"
 #include "dynamics/floor_plane.hpp"
 #include "dynamics/frame_dynamics.hpp"
-#include "dynamics/height_range.hpp"
 #include "dynamics/kalman_cv.hpp"
 #include "dynamics/object_points.hpp"
 #include "perception/instances.hpp"
@@ -130,10 +129,11 @@ class ObjectTracker {
   std::optional<Centre> measureCentre(const Track& track, const std::vector<Vec3>& p_camera,
                                       const Instance* instance,
                                       const ObjectTrackerInput& input) const;
-  /// How far the nearest point of a ranged person's feet lies in front of its body axis
-  /// (height_range.hpp, footLeadM), from the heading its filter's velocity gives.
-  [[nodiscard]] double footLead(const Track& track, const HeightRange& range,
-                                const ObjectTrackerInput& input) const;
+  /// |cos| of the angle between a ranged person's level heading (its filter's velocity) and the
+  /// level viewing direction to `p_camera`; none while it stands or its velocity is not known
+  /// (height_range.hpp, footLeadM).
+  [[nodiscard]] std::optional<double> headingAbsCos(const Track& track, const Vec3& p_camera,
+                                                    const ObjectTrackerInput& input) const;
   /// The instance's sample pixels (dynamics/object_points.hpp; people: the trunk).
   ObjectSample samplePixels(const Instance& instance, const ObjectTrackerInput& input) const;
   /// Points of `pixels` lifted with this frame's depth into the world; false-depth ones dropped,

@@ -43,21 +43,19 @@ double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv
 
 }  // namespace
 
-double ObjectTracker::footLead(const Track& track, const HeightRange& range,
-                               const ObjectTrackerInput& input) const {
+std::optional<double> ObjectTracker::headingAbsCos(const Track& track, const Vec3& p_camera,
+                                                   const ObjectTrackerInput& input) const {
   // A walker faces the way it walks; a standing person, or one whose velocity is not known yet,
   // may face anywhere.
-  const FloorContactOptions options;
   const Vec3 v_world = track.filter.velocity();
   if (!filterVelocityKnown(track) || !(v_world.norm() >= config_.static_speed_mps))
-    return footLeadM(options, std::nullopt);
+    return std::nullopt;
   const Vec3 n = floor_->normal_camera.normalized();
-  const Vec3 v = input.T_world_camera.linear().transpose() * v_world;
-  const Vec3 v_level = v - n.dot(v) * n;
-  const Vec3 ray_level = range.p_camera - n.dot(range.p_camera) * n;
-  if (!(v_level.norm() > 1e-6) || !(ray_level.norm() > 1e-6))
-    return footLeadM(options, std::nullopt);
-  return footLeadM(options, std::abs(v_level.normalized().dot(ray_level.normalized())));
+  const auto level = [&](const Vec3& x) { return Vec3(x - n.dot(x) * n); };
+  const Vec3 v = level(input.T_world_camera.linear().transpose() * v_world);
+  const Vec3 ray = level(p_camera);
+  if (!(v.norm() > 1e-6) || !(ray.norm() > 1e-6)) return std::nullopt;
+  return std::abs(v.normalized().dot(ray.normalized()));
 }
 
 std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
@@ -77,8 +75,8 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
         // to erosion or hidden), and then used alone (a floor's 1-2 % against a stature's
         // population spread of 5 %: the simulated approach's second walker read 7.5 % near by
         // its height, +0.7 % by its soles, docs/tracking.md "Session 18").
-        const auto contact =
-            rangeFromFloorContact(*extent, input.camera, *floor_, footLead(track, *range, input));
+        const auto contact = rangeFromFloorContact(*extent, input.camera, *floor_,
+                                                   headingAbsCos(track, range->p_camera, input));
         if (contact && std::abs(contact->range_m - range->range_m) <= 3.0 * range->sigma_range_m)
           range = contact;
       }

@@ -110,7 +110,7 @@ TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   ASSERT_NEAR(up.dot(soles), floor.offset_m, 1e-9);
   const FloorContactOptions options;
   const double lead_m = footLeadM(options, 1.0);  // walking at the camera
-  EXPECT_DOUBLE_EQ(lead_m, options.foot_lead_along_m);
+  ASSERT_DOUBLE_EQ(lead_m, options.foot_lead_along_m);
   const Vec3 toes = soles - lead_m * ahead + options.foot_outline_height_m * up;
   const Vec3 crown = soles + stature_m * up;
   const Vec3 torso = crown + kTorsoCentreBelowTop * (soles - crown);
@@ -118,7 +118,7 @@ TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   extent.top_px = c.project(crown).y();
   extent.bottom_px = c.project(toes).y();
   extent.column_px = c.project(soles).x();
-  const auto contact = rangeFromFloorContact(extent, c, floor, lead_m, options);
+  const auto contact = rangeFromFloorContact(extent, c, floor, 1.0, options);
   ASSERT_TRUE(contact);
   EXPECT_LT((contact->p_camera - torso).norm(), 0.02);
   EXPECT_GT(contact->scale_sigma, 0.0);
@@ -126,8 +126,9 @@ TEST(CameraFloor, TheSolesOnTheFloorPlaceAWalkerWhateverItsStature) {
   // Read as if the lowest row lay on the floor under the body's axis, it is near: by the toes'
   // lead, less the 12 cm further that the toes' outline 2 cm up puts the ray's floor point.
   FloorContactOptions on_the_axis;
+  on_the_axis.foot_lead_along_m = on_the_axis.foot_lead_side_m = 0.0;
   on_the_axis.foot_outline_height_m = 0.0;
-  const auto under_axis = rangeFromFloorContact(extent, c, floor, 0.0, on_the_axis);
+  const auto under_axis = rangeFromFloorContact(extent, c, floor, 1.0, on_the_axis);
   ASSERT_TRUE(under_axis);
   EXPECT_LT(under_axis->range_m, torso.norm() - 0.05);
   const auto stature = rangeFromHeight(extent, c, up);
