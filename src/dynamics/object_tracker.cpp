@@ -332,7 +332,6 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.filter.updateVelocityAlong(input.T_world_camera.linear() * floor_->normal_camera, 0.0,
                                      config_.vertical_speed_sigma_mps);
   const bool verified_static = instance && input.dynamics.foundStatic(instance->id);
-  const auto isSlow = [&](const Vec3& v) { return v.norm() < config_.static_speed_mps; };
   if (ranged_centre && beyondWalkersSpeed(track.filter.velocity())) {
     // The ranges rush (or recede) faster than a walker can: the mask's height changes for
     // another reason (a far eroded mask gaining head and feet as the person nears read 36 -> 24 m
@@ -349,7 +348,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // so its "not moving" says nothing (a walker 10 m down a hall was held still until depth
     // reached it); the filter's own velocity, once known, does. The filter is not held still:
     // its centres are all that shows the person setting off.
-    const bool slow = filterVelocityKnown(track) && isSlow(track.filter.velocity());
+    const bool slow = filterKnownSlow(track);
     track.still = slow ? track.still + 1 : 0;
     track.stationary = verified_static || track.still >= config_.static_after_frames;
     return;
@@ -371,8 +370,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // points stop at once while the filtered velocity would decay over the filter's memory.
   // A new track's filtered velocity is its prior (0 +- 1 m/s): that says nothing of slowness (a
   // walker far down a hall, not yet flagged moving, was held still for its first frames).
-  const bool slow = (filterVelocityKnown(track) && isSlow(track.filter.velocity())) ||
-                    (v_measured && isSlow(*v_measured));
+  const bool slow = filterKnownSlow(track) || (v_measured && isSlow(*v_measured));
   // Not found moving is not found still: the dynamics stage gives no verdict on an object it
   // cannot judge (a person walking in at the image's side was made static after 9 frames while
   // its points measured 0.5-0.7 m/s, and then held still). So "three times as long" needs the

@@ -110,6 +110,10 @@ class ObjectTracker {
   [[nodiscard]] Track::CentreRule centreRule(const Track& track, bool seen, bool ranged) const;
   /// The filter's velocity has been narrowed from its prior (0 +- 1 m/s) by measurements.
   [[nodiscard]] bool filterVelocityKnown(const Track& track) const;
+  /// Slower than `static_speed_mps`: what a standing object's jitter reads (NaN is not slow).
+  [[nodiscard]] bool isSlow(const Vec3& v_mps) const;
+  /// The filter's velocity is known and slow: the track stands (or its heading says nothing).
+  [[nodiscard]] bool filterKnownSlow(const Track& track) const;
   /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.
   [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;
   /// The configured noise of a track's filter (a new track, or one restarted at a centre).

@@ -48,8 +48,7 @@ std::optional<double> ObjectTracker::headingAbsCos(const Track& track, const Vec
   // A walker faces the way it walks; a standing person, or one whose velocity is not known yet,
   // may face anywhere.
   const Vec3 v_world = track.filter.velocity();
-  if (!filterVelocityKnown(track) || !(v_world.norm() >= config_.static_speed_mps))
-    return std::nullopt;
+  if (!filterVelocityKnown(track) || isSlow(v_world)) return std::nullopt;
   const Vec3 n = floor_->normal_camera.normalized();
   const auto level = [&](const Vec3& x) { return Vec3(x - n.dot(x) * n); };
   const Vec3 v = level(input.T_world_camera.linear().transpose() * v_world);

@@ -40,6 +40,14 @@ bool ObjectTracker::filterVelocityKnown(const Track& track) const {
   return track.filter.velocitySigma() <= config_.velocity_known_sigma_mps;
 }
 
+bool ObjectTracker::isSlow(const Vec3& v_mps) const {
+  return v_mps.norm() < config_.static_speed_mps;
+}
+
+bool ObjectTracker::filterKnownSlow(const Track& track) const {
+  return filterVelocityKnown(track) && isSlow(track.filter.velocity());
+}
+
 std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
                                                          const ObjectTrackerInput& input) {
   if (!input.tracked) return std::nullopt;
