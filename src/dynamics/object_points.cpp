@@ -1,6 +1,7 @@
 #include "dynamics/object_points.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -88,6 +89,40 @@ std::vector<uint8_t> withinDepthBand(const std::vector<float>& z_m, double band_
   for (size_t i = 0; i < z_m.size(); ++i)
     keep[i] = z_m[i] > 0.f && std::abs(z_m[i] - z_median) <= float(band_m);
   return keep;
+}
+
+std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
+                                         const std::vector<float>& z_m, const cv::Mat& labels,
+                                         uint16_t id, const cv::Mat& depth_m, int reach_px,
+                                         double margin_m) {
+  std::vector<uint8_t> beside(pixels.size(), 0);
+  if (reach_px <= 0 || labels.empty() || labels.size() != depth_m.size()) return beside;
+  const double diagonal = std::sqrt(0.5);
+  const std::array<cv::Point2d, 8> directions = {{{1, 0},
+                                                  {diagonal, diagonal},
+                                                  {0, 1},
+                                                  {-diagonal, diagonal},
+                                                  {-1, 0},
+                                                  {-diagonal, -diagonal},
+                                                  {0, -1},
+                                                  {diagonal, -diagonal}}};
+  const std::array<double, 2> rings = {0.5 * reach_px, double(reach_px)};
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    if (!(z_m[i] > 0.f)) continue;
+    const float nearer_than_m = z_m[i] - float(margin_m);
+    for (double r : rings) {
+      for (const cv::Point2d& d : directions) {
+        const int x = int(std::lround(pixels[i].x + r * d.x));
+        const int y = int(std::lround(pixels[i].y + r * d.y));
+        if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
+        if (labels.at<uint16_t>(y, x) == id) continue;
+        const float z = depth_m.at<float>(y, x);
+        if (std::isfinite(z) && z > 0.f && z < nearer_than_m) beside[i] = 1;
+      }
+      if (beside[i]) break;
+    }
+  }
+  return beside;
 }
 
 int instanceCutSide(const Instance& instance, int image_cols) {

@@ -34,6 +34,15 @@ struct ObjectSample {
 ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
                                 const SampleOptions& options);
 
+/// Which of `pixels` (depths `z_m`, 0: none) have, within `reach_px` of them, a pixel of another
+/// label (not `id`) whose depth is nearer by more than `margin_m`: a nearer surface whose motion
+/// the dense flow's patches there carry along (probed on two rings, reach/2 and reach, in eight
+/// directions). Pixels without depth are never flagged.
+std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
+                                         const std::vector<float>& z_m, const cv::Mat& labels,
+                                         uint16_t id, const cv::Mat& depth_m, int reach_px,
+                                         double margin_m);
+
 /// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both):
 /// an object cut by the image's side shows only part of itself.
 int instanceCutSide(const Instance& instance, int image_cols);

@@ -45,6 +45,7 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
       cv::Point2f px = t.pixels[i];
       if (!carryByFlow(input.flow_half, size, px)) continue;
       carried[k].p_prev_world.push_back(t.p_world[i]);
+      carried[k].beside_nearer.push_back(t.beside_nearer[i]);
       carried[k].pixels.emplace_back(px.x, px.y);
     }
     for (cv::Point2f px : t.voters)
@@ -154,6 +155,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     track.pixels.clear();
     for (const auto& px : carried.pixels) track.pixels.emplace_back(float(px.x()), float(px.y()));
     track.p_world = carried.p_prev_world;
+    track.beside_nearer = carried.beside_nearer;
     track.voters.clear();
     for (const auto& px : carried.voters) track.voters.emplace_back(float(px.x()), float(px.y()));
     return;
@@ -171,6 +173,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     const double z_predicted = (T_camera_world * (track.motion * carried.p_prev_world[i])).z();
     if (z <= 0.f || std::abs(z - z_predicted) > config_.depth_band_m) continue;
     kept.p_prev_world.push_back(carried.p_prev_world[i]);
+    kept.beside_nearer.push_back(carried.beside_nearer[i]);
     kept_pixels.emplace_back(float(px.x()), float(px.y()));
     kept_depth_m.push_back(z);
   }
@@ -179,14 +182,29 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   const std::vector<cv::Point2f> kept_rays = input.camera.undistortPixels(kept_pixels);
   std::optional<Vec3> v_measured;
   if (dt > 0.0) {
-    std::vector<Eigen::Vector2d> rays_px;
-    rays_px.reserve(kept_rays.size());
-    for (const cv::Point2f& r : kept_rays) rays_px.emplace_back(r.x, r.y);
+    // Points that lay beside a nearer surface moved with it in the flow (a walker coming out
+    // from behind another took the other's motion): the motion is fitted without them while
+    // enough others remain (with fewer, all are fitted: no motion at all cost more, a walker
+    // coming out from behind a cabinet then read its sliding centre alone, docs/tracking.md
+    // "Session 30").
+    size_t clear_points = 0;
+    for (uint8_t beside : kept.beside_nearer) clear_points += beside ? 0 : 1;
+    const bool skip_beside =
+        config_.motion_skips_nearer_edge && clear_points >= size_t(config_.min_motion_points);
+    std::vector<Vec3> fit_p_prev;
+    std::vector<Eigen::Vector2d> fit_rays;
+    std::vector<double> fit_depth_m;
+    for (size_t i = 0; i < kept_rays.size(); ++i) {
+      if (skip_beside && kept.beside_nearer[i]) continue;
+      fit_p_prev.push_back(kept.p_prev_world[i]);
+      fit_rays.emplace_back(kept_rays[i].x, kept_rays[i].y);
+      fit_depth_m.push_back(kept_depth_m[i]);
+    }
     const ObjectMotion motion =
-        estimateObjectMotion(kept.p_prev_world, rays_px, T_camera_world, input.camera, track.motion,
-                             motionOptions(input.frame_index, track.id), kept_depth_m);
+        estimateObjectMotion(fit_p_prev, fit_rays, T_camera_world, input.camera, track.motion,
+                             motionOptions(input.frame_index, track.id), fit_depth_m);
     if (motion.ok) {
-      v_measured = inlierCentroidVelocity(motion, kept.p_prev_world, dt);
+      v_measured = inlierCentroidVelocity(motion, fit_p_prev, dt);
       track.motion = motion.H_world;
       track.inliers = motion.inliers;
     } else {

@@ -55,6 +55,9 @@ class ObjectTracker {
     bool prior_dynamic = true;        // a class that moves by itself (prior_dynamic_classes)
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
+    // Per point: a nearer surface lies within the flow's reach of it in the last frame, so the
+    // flow that carries it into this one carries that surface's motion too (not fitted).
+    std::vector<uint8_t> beside_nearer;
     // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
     // flow only to vote in the association, so such a track survives a missed frame.
     std::vector<cv::Point2f> voters;
@@ -97,6 +100,7 @@ class ObjectTracker {
   };
   struct Carried {  // one track's points carried into this frame
     std::vector<Vec3> p_prev_world;
+    std::vector<uint8_t> beside_nearer;  // Track::beside_nearer of each
     std::vector<Eigen::Vector2d> pixels;
     std::vector<Eigen::Vector2d> voters;  // Track::voters carried (no 3D)
   };

@@ -140,6 +140,7 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
                          const std::vector<cv::Point2f>* rays) const {
   track.pixels.clear();
   track.p_world.clear();
+  track.beside_nearer.clear();
   track.voters.clear();
   track.depth_share = 0.0;
   std::vector<float> z(pixels.size());
@@ -154,11 +155,18 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   // that changes as the point moves in the image: a still object there would read as moving).
   std::vector<cv::Point2f> undistorted;
   if (!rays) rays = &(undistorted = input.camera.undistortPixels(pixels));
+  // The dense flow's 8 px patches at its finest level cover 2^(level + 1) * 8 px of the full
+  // image (half-size images): a point is carried by patches reaching half that far.
+  const int flow_reach_px = (8 << (config_.flow_finest_scale + 1)) / 2;
+  const std::vector<uint8_t> beside =
+      besideNearerSurface(pixels, z, input.instances.labels, track.instance, input.depth_m,
+                          flow_reach_px, config_.depth_band_m);
   for (size_t i = 0; i < pixels.size(); ++i) {
     if (!keep[i]) continue;
     track.pixels.push_back(pixels[i]);
     const cv::Point2f& ray = (*rays)[i];
     track.p_world.push_back(input.T_world_camera * input.camera.backproject(ray.x, ray.y, z[i]));
+    track.beside_nearer.push_back(beside[i]);
   }
   track.depth_share = double(track.pixels.size()) / double(pixels.size());
 }

@@ -16,6 +16,7 @@ struct ObjectTrackingConfig {
   bool reanchor_on_rule_change = true;
   bool first_frame_motion = true;
   bool first_motion_cut_across_ray = true;
+  bool motion_skips_nearer_edge = true;
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   int flow_refinement_iterations = 0;
@@ -73,6 +74,12 @@ struct ObjectTrackingConfig {
       "a new track cut by the image's left or right side takes from its first-frame motion only "
       "the velocity across the line of sight (along it a sliver's motion is biased toward the "
       "camera); off: such a track gets no first-frame motion");
+    v("motion_skips_nearer_edge", motion_skips_nearer_edge,
+      "an object's rigid motion is fitted without its points within the dense flow's reach (half "
+      "its patches' footprint, flow_finest_scale) of a nearer surface (more than depth_band_m "
+      "nearer): there the flow carries the nearer surface's motion (a walker coming out from "
+      "behind another read the other's 1 m/s across the line of sight), unless fewer than "
+      "min_motion_points others remain (docs/tracking.md 'Session 30')");
     v("centre_min_points", centre_min_points,
       "fewest points with depth that place an object's centre (fewer: no centre this frame)",
       Range{1, 100000});
