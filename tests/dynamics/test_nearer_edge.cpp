@@ -86,6 +86,5 @@ TEST(ObjectTracker, AStandingPersonBesideANearerSurfaceDoesNotTakeItsMotion) {
     return out.size() == 1 ? out[0].speed_mps : -1.0;
   };
   EXPECT_LT(speedAfter(true), 0.15);
-  EXPECT_GT(speedAfter(false), 0.35);  // without the rule it takes that motion  // the mechanism:
-                                       // without the rule it takes the motion
+  EXPECT_GT(speedAfter(false), 0.35);  // without the rule it takes that motion
 }
