@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "box_instance.hpp"
 #include "dynamics/object_tracker.hpp"
 #include "level_floor.hpp"
 
@@ -36,13 +37,8 @@ Frame walkerOnAFloor(double x_m, double z_m, double bob_m, bool floor_in_view,
   f.instances = Instances::none(cv::Size(c.width, c.height));
   const cv::Rect box =
       cv::Rect(left, top, right - left + 1, bottom - top + 1) & cv::Rect(0, 0, c.width, c.height);
-  f.instances.labels(box).setTo(1);
   f.depth_m(box).setTo(float(z_m - 0.15));
-  Instance person;
-  person.id = 1;
-  person.class_name = "person";
-  person.box = box;
-  f.instances.items.push_back(person);
+  test::addBoxInstance(f.instances, 1, "person", box);
   return f;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "box_instance.hpp"
 #include "dynamics/height_range.hpp"
 #include "dynamics/object_tracker.hpp"
 #include "level_floor.hpp"
@@ -32,13 +33,7 @@ PersonExtent extentOf(const Vec3& p_soles, double stature_m, const PinholeCamera
 /// Labels with a person-shaped mask: a `width_px` wide column spanning rows [top, bottom].
 Instances personMask(int left, int width_px, int top, int bottom) {
   Instances instances = Instances::none(cv::Size(kW, kH));
-  const cv::Rect box = cv::Rect(left, top, width_px, bottom - top + 1) & cv::Rect(0, 0, kW, kH);
-  instances.labels(box).setTo(1);
-  Instance person;
-  person.id = 1;
-  person.class_name = "person";
-  person.box = box;
-  instances.items.push_back(person);
+  test::addBoxInstance(instances, 1, "person", cv::Rect(left, top, width_px, bottom - top + 1));
   return instances;
 }
 

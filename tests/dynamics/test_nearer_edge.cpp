@@ -3,6 +3,7 @@
 // patches there carry the nearer surface's motion.
 #include <gtest/gtest.h>
 
+#include "box_instance.hpp"
 #include "dynamics/object_points.hpp"
 #include "dynamics/object_tracker.hpp"
 
@@ -28,12 +29,7 @@ Scene standingBesideNearer(int left, int right) {
   for (int y = box.y; y < box.y + box.height; ++y)
     for (int x = box.x; x < box.x + box.width; ++x)
       s.depth_m.at<float>(y, x) = 4.0f + 0.05f * float(x % 7) / 7.f + 0.02f * float(y % 5);
-  s.instances.labels(box).setTo(1);
-  Instance person;
-  person.id = 1;
-  person.class_name = "person";
-  person.box = box;
-  s.instances.items.push_back(person);
+  test::addBoxInstance(s.instances, 1, "person", box);
   return s;
 }
 

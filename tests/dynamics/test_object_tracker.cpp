@@ -2,6 +2,7 @@
 // ids survive a frame the segmenter misses, new objects get new ids, ended ids are not reused.
 #include <gtest/gtest.h>
 
+#include "box_instance.hpp"
 #include "dynamics/object_points.hpp"
 #include "dynamics/object_tracker.hpp"
 
@@ -41,12 +42,7 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
             2.0f + 0.05f * float((x - left) % 9) / 9.f + 0.02f * float(y % 5);
     if (!present[k]) continue;
     const uint16_t id = uint16_t(k + 1);
-    f.instances.labels(box).setTo(id);
-    Instance it;
-    it.id = id;
-    it.class_name = "box";
-    it.box = box;
-    f.instances.items.push_back(it);
+    test::addBoxInstance(f.instances, id, "box", box);
   }
   if (with_flow)
     f.flow_half = cv::Mat(kH / 2, kW / 2, CV_32FC2, cv::Scalar(kPixelsPerFrame / 2, 0.f));
