@@ -97,30 +97,21 @@ std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
                                          double margin_m) {
   std::vector<uint8_t> beside(pixels.size(), 0);
   if (reach_px <= 0 || labels.empty() || labels.size() != depth_m.size()) return beside;
-  const double diagonal = std::sqrt(0.5);
-  const std::array<cv::Point2d, 8> directions = {{{1, 0},
-                                                  {diagonal, diagonal},
-                                                  {0, 1},
-                                                  {-diagonal, diagonal},
-                                                  {-1, 0},
-                                                  {-diagonal, -diagonal},
-                                                  {0, -1},
-                                                  {diagonal, -diagonal}}};
-  const std::array<double, 2> rings = {0.5 * reach_px, double(reach_px)};
+  // Two rings, half the reach and the reach, eight directions each.
+  std::array<cv::Point2f, 16> probes;
+  for (int k = 0; k < 16; ++k) {
+    const double angle = (k % 8) * CV_PI / 4.0, r = (k < 8 ? 0.5 : 1.0) * reach_px;
+    probes[size_t(k)] = cv::Point2f(float(r * std::cos(angle)), float(r * std::sin(angle)));
+  }
   for (size_t i = 0; i < pixels.size(); ++i) {
     if (!(z_m[i] > 0.f)) continue;
-    const float nearer_than_m = z_m[i] - float(margin_m);
-    for (double r : rings) {
-      for (const cv::Point2d& d : directions) {
-        const int x = int(std::lround(pixels[i].x + r * d.x));
-        const int y = int(std::lround(pixels[i].y + r * d.y));
-        if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
-        if (labels.at<uint16_t>(y, x) == id) continue;
-        const float z = depth_m.at<float>(y, x);
-        if (std::isfinite(z) && z > 0.f && z < nearer_than_m) beside[i] = 1;
-      }
-      if (beside[i]) break;
-    }
+    beside[i] = std::any_of(probes.begin(), probes.end(), [&](const cv::Point2f& d) {
+      const cv::Point2f q = pixels[i] + d;
+      const int x = int(std::lround(q.x)), y = int(std::lround(q.y));
+      if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return false;
+      const float z = depthAt(depth_m, q);
+      return labels.at<uint16_t>(y, x) != id && z > 0.f && z < z_m[i] - float(margin_m);
+    });
   }
   return beside;
 }

@@ -7,6 +7,7 @@
 #include "core/median.hpp"
 #include "dynamics/height_range.hpp"
 #include "dynamics/object_points.hpp"
+#include "perception/frame_prep.hpp"
 
 namespace dynanav {
 namespace {
@@ -155,9 +156,10 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   // that changes as the point moves in the image: a still object there would read as moving).
   std::vector<cv::Point2f> undistorted;
   if (!rays) rays = &(undistorted = input.camera.undistortPixels(pixels));
-  // The dense flow's 8 px patches at its finest level cover 2^(level + 1) * 8 px of the full
-  // image (half-size images): a point is carried by patches reaching half that far.
-  const int flow_reach_px = (8 << (config_.flow_finest_scale + 1)) / 2;
+  // A point is carried by the shared flow's patches that cover it, reaching half their
+  // footprint from it (only the motion fit uses the flag).
+  const int flow_reach_px =
+      config_.motion_skips_nearer_edge ? sharedFlowFootprintPx(config_.flow_finest_scale) / 2 : 0;
   const std::vector<uint8_t> beside =
       besideNearerSurface(pixels, z, input.instances.labels, track.instance, input.depth_m,
                           flow_reach_px, config_.depth_band_m);

@@ -7,6 +7,7 @@
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_points.hpp"
 #include "dynamics/scene_flow.hpp"
+#include "perception/frame_prep.hpp"
 
 namespace dynanav {
 namespace {
@@ -123,9 +124,7 @@ void PriorVerifier::keepWithinDepthBand(std::vector<Vec3>& p_old, std::vector<Ve
 }
 
 int PriorVerifier::flowFootprintPx() const {
-  // DIS estimates one displacement per patch at its finest pyramid level and blends the
-  // overlapping patches: the flow at a pixel is made from image content up to a patch away.
-  return int(std::lround(dis_->getPatchSize() * (1 << dis_->getFinestScale()) / kFlowScale));
+  return disPatchFootprintPx(dis_->getPatchSize(), dis_->getFinestScale(), kFlowScale);
 }
 
 std::vector<uint16_t> cutOutMovingObjects(cv::Mat& allowed, const Instances& instances,

@@ -1,5 +1,6 @@
 #include "perception/frame_prep.hpp"
 
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 namespace dynanav {
@@ -18,12 +19,17 @@ PreparedFrame prepareFrame(const RgbdFrame& frame, bool with_half) {
 
 }  // namespace
 
+int disPatchFootprintPx(int patch_px, int finest_scale, double image_scale) {
+  return int(std::lround(patch_px * (1 << finest_scale) / image_scale));
+}
+
 PreparedFrame FramePrep::prepare(const RgbdFrame& frame) {
   PreparedFrame out = prepareFrame(frame, needs_.half || needs_.flow);
   if (!needs_.flow) return out;
   if (!previous_half_.empty() && previous_half_.size() == out.grey_half.size()) {
     if (!dis_) {
       dis_ = cv::DISOpticalFlow::create(cv::DISOpticalFlow::PRESET_ULTRAFAST);
+      dis_->setPatchSize(kSharedFlowPatchPx);
       dis_->setFinestScale(needs_.flow_finest_scale);
       dis_->setVariationalRefinementIterations(needs_.flow_refinement_iterations);
     }

@@ -18,6 +18,18 @@ struct PreparedFrame {
   cv::Mat flow_half;
 };
 
+/// Full-image pixels one DIS patch of `patch_px` spans at pyramid level `finest_scale` of an
+/// image scaled by `image_scale`: the flow at a pixel is made from image content up to this far
+/// away (DIS blends the overlapping patches).
+int disPatchFootprintPx(int patch_px, int finest_scale, double image_scale);
+
+/// DIS's patch side in FramePrep's shared flow (the ultrafast preset's), on half-size images.
+inline constexpr int kSharedFlowPatchPx = 8;
+/// The shared flow's footprint (disPatchFootprintPx) at its finest level `finest_scale`.
+inline int sharedFlowFootprintPx(int finest_scale) {
+  return disPatchFootprintPx(kSharedFlowPatchPx, finest_scale, 0.5);
+}
+
 /// Prepares frames in sequence order, remembering the previous one for the flow.
 class FramePrep {
  public:
