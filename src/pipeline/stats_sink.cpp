@@ -123,16 +123,16 @@ nlohmann::json rollingShutterJson(const SlamSystem& slam) {
     stages.push_back({{"from_frame", stage.frame},
                       {"readout_ms", stage.readout_s * 1e3},
                       {"sigma_ms", stage.sigma_s * 1e3},
-                      {"frames", stage.frames}});
+                      {"window_keyframes", stage.window_keyframes}});
   const auto& all = slam.onlineReadoutStages();
   return {{"configured_ms", slam.configuredReadoutS() * 1e3},
           {"online", slam.readoutOnline()},
-          // Online: the readout re-timing used last (null before the first stage settled).
+          // Online: the readout re-timing used last (null before bundle adjustment adopted one).
           {"online_readout_ms",
            all.empty() ? nlohmann::json(nullptr) : nlohmann::json(slam.onlineReadoutS() * 1e3)},
           {"online_stages", stages},
-          // The evidence since the last stage (the whole run when not online), linearised at the
-          // readout in use: unbiased only when that is the true one.
+          // The tracking residuals' own estimate since the last adopted readout (the whole run when
+          // not online), linearised at the readout in use: unbiased only when that is the true one.
           {"estimate_ms", estimator.frames() > 0 ? number_or_null(estimator.readoutS() * 1e3)
                                                  : nlohmann::json(nullptr)},
           {"sigma_ms", number_or_null(estimator.sigmaS() * 1e3)},

@@ -4,6 +4,9 @@
 #include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
 
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
 namespace dynanav {
 namespace {
 
@@ -12,29 +15,66 @@ constexpr double kChi2Stereo = 7.815;
 
 /// p_camera = R(q) p_world + t with pose = (qw, qx, qy, qz, tx, ty, tz): one 7-parameter block
 /// (6 in the tangent space) per keyframe keeps the Schur complement's blocks few and dense.
+/// `readout_s` (nullptr: not estimated) adds the shear a readout other than the one the keypoint
+/// was re-timed with predicts (BaObservation::readout_px_per_s).
+template <class T>
+void weightedResidual(const BaObservation& obs, const PoseCamera& cam, double weight, const T* pose,
+                      const T* point, const T* readout_s, T* residual) {
+  const T* q = pose;
+  const T* t = pose + 4;
+  T p[3];
+  ceres::UnitQuaternionRotatePoint(q, point, p);
+  p[0] += t[0];
+  p[1] += t[1];
+  p[2] += t[2];
+  const T inv_z = T(1.0) / p[2];
+  T u = T(cam.fx) * p[0] * inv_z + T(cam.cx);
+  T v = T(cam.fy) * p[1] * inv_z + T(cam.cy);
+  T u_right = u - T(cam.bf) * inv_z;
+  if (readout_s != nullptr) {
+    const T readout_error_s = readout_s[0] - T(obs.readout_used_s);
+    u += readout_error_s * T(obs.readout_px_per_s.x());
+    v += readout_error_s * T(obs.readout_px_per_s.y());
+    u_right += readout_error_s * T(obs.readout_px_per_s.z());
+  }
+  residual[0] = T(weight) * (T(obs.u) - u);
+  residual[1] = T(weight) * (T(obs.v) - v);
+  if (obs.u_right >= 0.0) residual[2] = T(weight) * (T(obs.u_right) - u_right);
+}
+
 struct BaCost {
   explicit BaCost(const BaObservation& obs, const PoseCamera& cam)
       : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
   template <class T>
   bool operator()(const T* pose, const T* point, T* residual) const {
-    const T* q = pose;
-    const T* t = pose + 4;
-    T p[3];
-    ceres::UnitQuaternionRotatePoint(q, point, p);
-    p[0] += t[0];
-    p[1] += t[1];
-    p[2] += t[2];
-    const T inv_z = T(1.0) / p[2];
-    const T u = T(cam_.fx) * p[0] * inv_z + T(cam_.cx);
-    residual[0] = T(weight_) * (T(obs_.u) - u);
-    residual[1] = T(weight_) * (T(obs_.v) - (T(cam_.fy) * p[1] * inv_z + T(cam_.cy)));
-    if (obs_.u_right >= 0.0) residual[2] = T(weight_) * (T(obs_.u_right) - (u - T(cam_.bf) * inv_z));
+    weightedResidual<T>(obs_, cam_, weight_, pose, point, nullptr, residual);
     return true;
   }
   BaObservation obs_;
   PoseCamera cam_;
   double weight_;
 };
+
+struct BaReadoutCost {
+  explicit BaReadoutCost(const BaObservation& obs, const PoseCamera& cam)
+      : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
+  template <class T>
+  bool operator()(const T* pose, const T* point, const T* readout_s, T* residual) const {
+    weightedResidual<T>(obs_, cam_, weight_, pose, point, readout_s, residual);
+    return true;
+  }
+  BaObservation obs_;
+  PoseCamera cam_;
+  double weight_;
+};
+
+template <int kResiduals>
+ceres::CostFunction* costFor(const BaObservation& obs, const PoseCamera& cam, bool with_readout) {
+  if (with_readout)
+    return new ceres::AutoDiffCostFunction<BaReadoutCost, kResiduals, 7, 3, 1>(
+        new BaReadoutCost(obs, cam));
+  return new ceres::AutoDiffCostFunction<BaCost, kResiduals, 7, 3>(new BaCost(obs, cam));
+}
 
 using PoseManifold = ceres::ProductManifold<ceres::QuaternionManifold, ceres::EuclideanManifold<3>>;
 
@@ -59,16 +99,21 @@ struct ObservationError {
   bool in_front;
 };
 
-ObservationError evaluate(const BaObservation& obs, const PoseCamera& cam, const SE3& T_cw, const Vec3& p_w) {
-  const Vec3 p = T_cw * p_w;
+ObservationError evaluate(const BaProblem& problem, const BaObservation& obs) {
+  const Vec3 p = problem.keyframes[obs.keyframe].T_camera_world * problem.points[obs.point].p_world;
   if (p.z() <= 0.0) return {std::numeric_limits<double>::infinity(), 0.0, false};
+  const PoseCamera& cam = problem.camera;
+  const double readout_error_s =
+      problem.estimate_readout ? problem.readout_s - obs.readout_used_s : 0.0;
+  const Vec3 shear_px = readout_error_s * obs.readout_px_per_s;
   const double inv_z = 1.0 / p.z();
   const double u = cam.fx * p.x() * inv_z + cam.cx;
-  const double eu = obs.u - u, ev = obs.v - (cam.fy * p.y() * inv_z + cam.cy);
+  const double eu = obs.u - (u + shear_px.x());
+  const double ev = obs.v - (cam.fy * p.y() * inv_z + cam.cy + shear_px.y());
   const double pixel2 = eu * eu + ev * ev;
   double e2 = pixel2;
   if (obs.u_right >= 0.0) {
-    const double er = obs.u_right - (u - cam.bf * inv_z);
+    const double er = obs.u_right - (u - cam.bf * inv_z + shear_px.z());
     e2 += er * er;
   }
   return {e2 * obs.inv_sigma2, pixel2, true};
@@ -78,22 +123,50 @@ std::vector<uint8_t> classify(const BaProblem& problem) {
   std::vector<uint8_t> outlier(problem.observations.size(), 0);
   for (size_t i = 0; i < problem.observations.size(); ++i) {
     const auto& obs = problem.observations[i];
-    const auto e = evaluate(obs, problem.camera, problem.keyframes[obs.keyframe].T_camera_world,
-                            problem.points[obs.point].p_world);
+    const auto e = evaluate(problem, obs);
     const double threshold = obs.u_right >= 0.0 ? kChi2Stereo : kChi2Mono;
     outlier[i] = !e.in_front || e.chi2 > threshold;
   }
   return outlier;
 }
 
+/// Standard error of the readout block with every other free block marginalised: the last
+/// diagonal entry of (J^T J)^-1. A point seen once without depth leaves its ray's depth free;
+/// a relative damping of 1e-9 keeps the solve defined without moving the readout's entry.
+double readoutSigma(ceres::Problem& ceres_problem, std::vector<double*> free_blocks,
+                    double* readout) {
+  free_blocks.push_back(readout);
+  ceres::Problem::EvaluateOptions evaluate_options;
+  evaluate_options.parameter_blocks = free_blocks;
+  evaluate_options.apply_loss_function = true;
+  ceres::CRSMatrix crs;
+  if (!ceres_problem.Evaluate(evaluate_options, nullptr, nullptr, nullptr, &crs))
+    return std::numeric_limits<double>::infinity();
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> J(
+      crs.num_rows, crs.num_cols, static_cast<Eigen::Index>(crs.values.size()), crs.rows.data(),
+      crs.cols.data(), crs.values.data());
+  Eigen::SparseMatrix<double> H = Eigen::SparseMatrix<double>(J.transpose()) * J;
+  for (int k = 0; k < H.cols(); ++k) H.coeffRef(k, k) *= 1.0 + 1e-9;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(H);
+  if (ldlt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(H.cols());
+  unit(H.cols() - 1) = 1.0;
+  const double variance = ldlt.solve(unit)(H.cols() - 1);
+  return variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance)
+                                                   : std::numeric_limits<double>::infinity();
+}
+
+/// One Ceres solve of the problem in place; with `readout_sigma_s` (and the readout estimated)
+/// also the readout's standard error at the solution.
 void solve(BaProblem& problem, const BaOptions& options, int iterations, bool robust,
-           const std::vector<uint8_t>& skip) {
+           const std::vector<uint8_t>& skip, double* readout_sigma_s = nullptr) {
   std::vector<PoseBlock> poses;
   poses.reserve(problem.keyframes.size());
   for (const auto& kf : problem.keyframes) poses.push_back(toBlock(kf.T_camera_world));
   std::vector<Vec3> points;
   points.reserve(problem.points.size());
   for (const auto& p : problem.points) points.push_back(p.p_world);
+  double readout_s = problem.readout_s;
 
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -105,29 +178,42 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
   PoseManifold pose_manifold;
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   std::vector<uint8_t> pose_used(poses.size(), 0), point_used(points.size(), 0);
+  std::vector<double*> free_blocks;  // in the order the readout's standard error needs none of
   for (size_t i = 0; i < problem.observations.size(); ++i) {
     if (!skip.empty() && skip[i]) continue;
     const auto& obs = problem.observations[i];
     const bool stereo = obs.u_right >= 0.0;
-    ceres::CostFunction* cost =
-        stereo ? static_cast<ceres::CostFunction*>(
-                     new ceres::AutoDiffCostFunction<BaCost, 3, 7, 3>(new BaCost(obs, problem.camera)))
-               : new ceres::AutoDiffCostFunction<BaCost, 2, 7, 3>(new BaCost(obs, problem.camera));
-    ceres::LossFunction* loss = robust ? (stereo ? &huber_stereo : static_cast<ceres::LossFunction*>(&huber_mono)) : nullptr;
+    ceres::CostFunction* cost = stereo ? costFor<3>(obs, problem.camera, problem.estimate_readout)
+                                       : costFor<2>(obs, problem.camera, problem.estimate_readout);
+    ceres::LossFunction* loss =
+        robust ? (stereo ? &huber_stereo : static_cast<ceres::LossFunction*>(&huber_mono))
+               : nullptr;
     PoseBlock& pose = poses[obs.keyframe];
-    ceres_problem.AddResidualBlock(cost, loss, pose.x, points[obs.point].data());
+    if (problem.estimate_readout)
+      ceres_problem.AddResidualBlock(cost, loss, pose.x, points[obs.point].data(), &readout_s);
+    else
+      ceres_problem.AddResidualBlock(cost, loss, pose.x, points[obs.point].data());
     if (!pose_used[obs.keyframe]) {
       pose_used[obs.keyframe] = 1;
       ceres_problem.SetManifold(pose.x, &pose_manifold);
-      if (problem.keyframes[obs.keyframe].fixed) ceres_problem.SetParameterBlockConstant(pose.x);
+      if (problem.keyframes[obs.keyframe].fixed)
+        ceres_problem.SetParameterBlockConstant(pose.x);
+      else
+        free_blocks.push_back(pose.x);
       ordering->AddElementToGroup(pose.x, 1);
     }
     if (!point_used[obs.point]) {
       point_used[obs.point] = 1;
       ordering->AddElementToGroup(points[obs.point].data(), 0);
+      free_blocks.push_back(points[obs.point].data());
     }
   }
   if (ceres_problem.NumResidualBlocks() == 0) return;
+  if (problem.estimate_readout) {
+    ordering->AddElementToGroup(&readout_s, 1);
+    // A readout is a duration: a global shutter's noise must not shear the map the other way.
+    ceres_problem.SetParameterLowerBound(&readout_s, 0, 0.0);
+  }
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type =
       options.linear_solver == "dense_schur" ? ceres::DENSE_SCHUR : ceres::SPARSE_SCHUR;
@@ -137,13 +223,17 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &ceres_problem, &summary);
+  if (problem.estimate_readout && readout_sigma_s != nullptr)
+    *readout_sigma_s = readoutSigma(ceres_problem, free_blocks, &readout_s);
 
   for (size_t k = 0; k < poses.size(); ++k) {
-    if (pose_used[k] && !problem.keyframes[k].fixed) problem.keyframes[k].T_camera_world = fromBlock(poses[k]);
+    if (pose_used[k] && !problem.keyframes[k].fixed)
+      problem.keyframes[k].T_camera_world = fromBlock(poses[k]);
   }
   for (size_t k = 0; k < points.size(); ++k) {
     if (point_used[k]) problem.points[k].p_world = points[k];
   }
+  problem.readout_s = readout_s;
 }
 
 }  // namespace
@@ -154,8 +244,7 @@ double reprojectionRms(const BaProblem& problem, const std::vector<uint8_t>& ski
   for (size_t i = 0; i < problem.observations.size(); ++i) {
     if (!skip.empty() && skip[i]) continue;
     const auto& obs = problem.observations[i];
-    const auto e = evaluate(obs, problem.camera, problem.keyframes[obs.keyframe].T_camera_world,
-                            problem.points[obs.point].p_world);
+    const auto e = evaluate(problem, obs);
     if (!e.in_front) continue;
     sum += e.pixel2;
     ++count;
@@ -170,7 +259,9 @@ BaResult bundleAdjust(BaProblem& problem, const BaOptions& options) {
   // ORB-SLAM2: drop the observations that are still outliers, refine the rest without the
   // robust loss, then report which observations remain outliers.
   const auto first_outliers = classify(problem);
-  if (options.iterations_second > 0) solve(problem, options, options.iterations_second, false, first_outliers);
+  if (options.iterations_second > 0)
+    solve(problem, options, options.iterations_second, false, first_outliers,
+          options.readout_sigma ? &result.readout_sigma_s : nullptr);
   result.outlier = classify(problem);
   result.final_rms_px = reprojectionRms(problem, result.outlier);
   return result;

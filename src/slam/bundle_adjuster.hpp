@@ -6,6 +6,7 @@
 // level's inverse variance, Huber loss; after the first pass chi2 outliers are dropped and the
 // rest is refined without the robust loss.
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ struct BaObservation {
   int point = 0;     ///< index into BaProblem::points
   int keypoint = 0;  ///< keypoint index in that keyframe (for writing results back)
   double u = 0.0, v = 0.0, u_right = -1.0, inv_sigma2 = 1.0;
+  /// Issue 18, a readout estimated jointly (BaProblem::estimate_readout): the keypoint was re-timed
+  /// to its image's middle row with `readout_used_s`; a true readout R moves where the re-timed
+  /// keypoint should be seen by (R - readout_used_s) * readout_px_per_s in (u, v, u_right): its
+  /// row's time offset times the image motion of the point under its keyframe's own motion.
+  double readout_used_s = 0.0;
+  Vec3 readout_px_per_s = Vec3::Zero();
 };
 
 struct BaProblem {
@@ -37,18 +44,30 @@ struct BaProblem {
   std::vector<BaKeyFrame> keyframes;
   std::vector<BaPoint> points;
   std::vector<BaObservation> observations;
+  /// Issue 18: the colour camera's rolling-shutter readout as one more unknown shared by every
+  /// observation (keypoints re-timed with a wrong readout shear the keyframes and the points they
+  /// create alike; only the joint fit separates the shear from the map). `readout_s` is the
+  /// starting value in and the estimate out.
+  bool estimate_readout = false;
+  double readout_s = 0.0;
 };
 
 struct BaOptions {
   int iterations_first = 5;
   int iterations_second = 10;
   std::string linear_solver = "sparse_schur";  ///< or "dense_schur"
+  /// With BaProblem::estimate_readout: also its standard error (BaResult::readout_sigma_s).
+  bool readout_sigma = true;
 };
 
 struct BaResult {
   std::vector<uint8_t> outlier;  ///< per observation, after the final pass (chi2 or behind camera)
   double initial_rms_px = 0.0;   ///< RMS of the unweighted reprojection error before / after
   double final_rms_px = 0.0;
+  /// With BaProblem::estimate_readout: the readout's standard error (s) under the pixel noise model
+  /// (level-weighted, 1 px at level 0), the poses and points marginalised; infinite when the
+  /// window's motion does not determine it (a still camera).
+  double readout_sigma_s = std::numeric_limits<double>::infinity();
 };
 
 /// Optimises the non-fixed keyframe poses and all points in place.

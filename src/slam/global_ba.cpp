@@ -1,6 +1,7 @@
 #include "slam/global_ba.hpp"
 
 #include "slam/local_ba.hpp"
+#include "slam/readout_shear.hpp"
 
 namespace dynanav {
 
@@ -30,6 +31,13 @@ GlobalBaSnapshot buildGlobalBa(const Map& map) {
     if (!any) continue;
     s.problem.points.push_back({p->id, p->p_world});
     s.points.push_back(p);
+  }
+  // The readout is estimated here too, so that the whole map's points end where the local windows
+  // put them; its standard error (a solve of the whole map) is not needed: it is not adopted.
+  if (map.readout.estimate) {
+    std::vector<const KeyFrame*> keyframes;
+    for (const auto& kf : s.keyframes) keyframes.push_back(kf.get());
+    addReadoutShear(s.problem, keyframes, map.readout.readout_s);
   }
   return s;
 }
@@ -88,7 +96,10 @@ GlobalBaRun runGlobalBa(Map& map, const BaOptions& options) {
   GlobalBaRun run;
   run.keyframes = snapshot.problem.keyframes.size();
   run.points = snapshot.problem.points.size();
-  run.result = bundleAdjust(snapshot.problem, options);  // without the lock: tracking goes on
+  BaOptions global_options = options;
+  global_options.readout_sigma = false;
+  run.result =
+      bundleAdjust(snapshot.problem, global_options);  // without the lock: tracking goes on
   std::unique_lock lock(map.mutex());
   applyGlobalBa(snapshot, run.result, map);
   map.removeBad();

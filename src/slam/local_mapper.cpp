@@ -9,6 +9,7 @@
 #include "slam/global_ba.hpp"
 #include "slam/local_ba.hpp"
 #include "slam/matcher.hpp"
+#include "slam/readout_shear.hpp"
 #include "slam/triangulation.hpp"
 
 namespace dynanav {
@@ -134,6 +135,9 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
     std::unique_lock lock(map_.mutex());
     if (map_.numKeyFrames() <= 2) return;
     problem = buildLocalBa(keyframe, index);
+    if (map_.readout.estimate)
+      addReadoutShear(problem, {index.keyframes.begin(), index.keyframes.end()},
+                      map_.readout.readout_s);
   }
   BaOptions options;
   options.iterations_first = config_.ba_iterations_first;
@@ -145,6 +149,7 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
                 problem.observations.size(), result.initial_rms_px, result.final_rms_px);
   std::unique_lock lock(map_.mutex());
   applyLocalBa(problem, result, index);
+  adoptReadout(map_, problem, result);
   ++stats_.bundle_adjustments;
 }
 

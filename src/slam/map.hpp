@@ -3,6 +3,7 @@
 // counters. One mutex guards it in threaded mode: tracking holds it while it tracks a frame,
 // local mapping while it changes the map (its bundle adjustment solves on a copy, unlocked).
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -11,6 +12,20 @@
 #include "slam/map_point.hpp"
 
 namespace dynanav {
+
+/// Issue 18: the colour camera's rolling-shutter readout, estimated by bundle adjustment together
+/// with the map (tracking.rolling_shutter_online; slam/readout_shear.hpp): local mapping writes
+/// it, tracking re-times each frame's keypoints with it. Guarded by the map's mutex.
+struct MapReadout {
+  bool estimate = false;
+  double readout_s = 0.0;  ///< the estimate in use (starts at the configured readout)
+  double sigma_s = std::numeric_limits<double>::infinity();  ///< its standard error
+  /// A bundle adjustment's estimate replaces the one in use when its standard error is below this
+  /// (a still camera's window leaves the readout undetermined).
+  double adopt_sigma_s = 0.001;
+  int adopted = 0;           ///< estimates adopted so far
+  int window_keyframes = 0;  ///< keyframes of the adjustment that gave the one in use
+};
 
 class Map {
  public:
@@ -50,6 +65,7 @@ class Map {
   [[nodiscard]] size_t numKeyFrames() const { return keyframes_.size(); }
   [[nodiscard]] size_t numPoints() const { return points_.size(); }
   std::mutex& mutex() { return mutex_; }
+  MapReadout readout;
 
  private:
   std::map<uint64_t, KeyFramePtr> keyframes_;

@@ -19,9 +19,11 @@
 // The model is first order and bundle adjustment refines points and poses after it, so evidence
 // gathered while re-timing with R0 reads R0 + g (R - R0) with a gain g < 1 (0.1-0.8 in the
 // simulator: 3 ms in head turns, 20 ms in a static room for a true 25 ms; at R0 = R it is
-// unbiased: 24.87-24.91 ms for a true 25 in the head turns, scripts/readout_results.sh). The online
-// mode therefore iterates to that fixed point in stages (Tracker::readoutFor): gather evidence at
-// R0 until it settles, adopt its estimate as the next R0, start again.
+// unbiased: 24.87-24.91 ms for a true 25 in the head turns, scripts/readout_results.sh). It is
+// reported (stats.json rolling_shutter.estimate_ms: a check of the readout in use); the online mode
+// estimates the readout in bundle adjustment instead, where the map is free to move with it
+// (slam/readout_shear.hpp; session 8's staged iteration of this estimate needed most of a 10 s
+// scene and missed a static room, docs/dynamics.md).
 //
 // Per frame: linearise the residuals of the matched inliers in (pose, readout) at the readout the
 // pose was fitted with, weight them as pose optimisation does (pyramid level, Huber), and
@@ -58,13 +60,6 @@ struct ReadoutEvidence {
 /// re-timed with before the pose was fitted (0: not re-timed).
 ReadoutEvidence readoutEvidence(const Frame& frame, const KeypointMeasurements& observed,
                                 const CameraVelocity& motion, double readout_used_s);
-
-/// One settled stage of the online iteration: its estimate is re-timing's readout from `frame` on.
-struct ReadoutStage {
-  int64_t frame = 0;
-  double readout_s = 0.0, sigma_s = 0.0;
-  int frames = 0;  ///< frames of evidence pooled
-};
 
 /// Frames' evidence pooled by information.
 class ReadoutEstimator {

@@ -72,9 +72,9 @@ class SlamSystem {
   [[nodiscard]] LocalMapperStats mappingStats() const;
   [[nodiscard]] size_t numMapPoints() const;
   [[nodiscard]] size_t numKeyFrames() const;
-  /// Issue 18: the rolling-shutter readout estimated from the tracking residuals (the current
-  /// stage's when online), the online stages, and the readout configured (tracking key, else the
-  /// camera's).
+  /// Issue 18: the rolling-shutter readout estimated from the tracking residuals (since the last
+  /// adopted readout when online), the readouts bundle adjustment adopted online, and the readout
+  /// configured (tracking key, else the camera's).
   [[nodiscard]] const ReadoutEstimator& readoutEstimator() const {
     return tracker_->readoutEstimator();
   }

@@ -115,17 +115,22 @@ double Tracker::readoutFor(const Frame& frame) {
                                   ? config_.rolling_shutter_readout_ms * 1e-3
                                   : frame.features.camera->readout_s;
   if (!config_.rolling_shutter_online) return configured_s;
-  // Online: evidence gathered while re-timing with R0 reads R0 + g (R - R0), g < 1, unbiased
-  // only at R0 = R (slam/readout_estimate.hpp); each settled stage moves R0 to its estimate and
-  // starts a new one, a fixed-point iteration towards the true readout.
-  const double settled_sigma_s = config_.rolling_shutter_online_max_sigma_ms * 1e-3;
-  if (has_velocity_ && readout_estimator_.sigmaS() <= settled_sigma_s) {
-    // A readout longer than the frame interval would overlap the next frame's.
-    online_readout_s_ = std::clamp(readout_estimator_.readoutS(), 0.0, velocity_interval_s_);
-    online_stages_.push_back({int64_t(frame.id), readout_estimator_.readoutS(),
-                              readout_estimator_.sigmaS(), readout_estimator_.frames()});
-    readout_estimator_.restart();
+  // Online: bundle adjustment estimates the readout with the map (slam/readout_shear.hpp) and
+  // local mapping adopts each well-determined estimate; tracking re-times with the latest.
+  MapReadout& readout = map_.readout;
+  if (!readout.estimate) {
+    readout.estimate = true;
+    readout.readout_s = configured_s;
+    readout.adopt_sigma_s = config_.rolling_shutter_online_max_sigma_ms * 1e-3;
   }
+  if (readout.adopted > adopted_seen_) {
+    adopted_seen_ = readout.adopted;
+    online_stages_.push_back(
+        {int64_t(frame.id), readout.readout_s, readout.sigma_s, readout.window_keyframes});
+    readout_estimator_.restart();  // the tracking residuals' own estimate, at the new readout
+  }
+  // A readout longer than the frame interval would overlap the next frame's.
+  online_readout_s_ = std::clamp(readout.readout_s, 0.0, std::max(velocity_interval_s_, 0.0));
   return online_stages_.empty() ? configured_s : online_readout_s_;
 }
 

@@ -13,6 +13,7 @@
 #include "slam/map.hpp"
 #include "slam/mapping_stage.hpp"
 #include "slam/readout_estimate.hpp"
+#include "slam/readout_shear.hpp"
 #include "slam/relocaliser.hpp"
 #include "slam/rolling_shutter.hpp"
 
@@ -65,12 +66,12 @@ class Tracker {
   [[nodiscard]] const LocalMap& localMap() const { return local_; }
   /// Issue 18: the rolling-shutter readout estimated from the tracking residuals so far.
   [[nodiscard]] const ReadoutEstimator& readoutEstimator() const { return readout_estimator_; }
-  /// Stages of the online readout iteration (tracking.rolling_shutter_online): each settled
-  /// estimate, adopted from `frame` on.
+  /// The online readout's updates (tracking.rolling_shutter_online): each estimate local bundle
+  /// adjustment adopted (slam/readout_shear.hpp), used from `frame` on.
   [[nodiscard]] const std::vector<ReadoutStage>& onlineReadoutStages() const {
     return online_stages_;
   }
-  /// The readout re-timing uses after the last stage (clamped to [0, frame interval]).
+  /// The readout re-timing uses after the last update (clamped to [0, frame interval]).
   [[nodiscard]] double onlineReadoutS() const { return online_readout_s_; }
 
  private:
@@ -86,8 +87,9 @@ class Tracker {
   /// and re-optimises its pose; returns the local-map inliers left.
   int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read,
                           double readout_s) const;
-  /// The readout to re-time this frame with: the configured or camera's value, or the online
-  /// estimate once it has settled (tracking.rolling_shutter_online).
+  /// The readout to re-time this frame with: the configured or camera's value, or the latest
+  /// estimate bundle adjustment adopted (tracking.rolling_shutter_online). Call with the map
+  /// locked.
   double readoutFor(const Frame& frame);
 
   Map& map_;
@@ -109,6 +111,7 @@ class Tracker {
   KeyFramePtr awaiting_motion_;  ///< the map's first keyframe until the next frame gives a motion
   std::vector<ReadoutStage> online_stages_;
   double online_readout_s_ = 0.0;
+  int adopted_seen_ = 0;  ///< MapReadout::adopted when online_stages_ was last extended
 };
 
 }  // namespace dynanav

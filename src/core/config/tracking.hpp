@@ -90,8 +90,9 @@ struct TrackingConfig {
       "camera's own (camera.yaml / built-in calibration), 0 = treat as global shutter",
       Range{-1, 1000});
     v("rolling_shutter_online", rolling_shutter_online,
-      "re-time keypoints with the readout estimated online from the tracking residuals "
-      "(stats.json rolling_shutter) instead of rolling_shutter_readout_ms, once it is settled");
+      "estimate the readout in local bundle adjustment, with the map, starting from "
+      "rolling_shutter_readout_ms, and re-time keypoints with each well-determined estimate "
+      "(stats.json rolling_shutter.online_stages)");
     v("persistent_point_age_s", persistent_point_age_s,
       "with dynamics on, a frame's pose is found on matches to map points mapped at least this "
       "long ago (s) when there are persistent_min_matches of them, and the other matches are "
@@ -112,7 +113,8 @@ struct TrackingConfig {
     v("depth_alignment_step_px", depth_alignment_step_px,
       "grid step of those samples, in pixels of the half-resolution depth", Range{1, 100});
     v("rolling_shutter_online_max_sigma_ms", rolling_shutter_online_max_sigma_ms,
-      "the online readout estimate is used once its standard error (ms) is below this",
+      "a local bundle adjustment's readout estimate is used when its standard error (ms) is below "
+      "this",
       Range{0, 100, Range::kOpenLow});
   }
 };

@@ -1,0 +1,44 @@
+#pragma once
+// Issue 18: the rolling-shutter readout estimated by bundle adjustment, with the map.
+//
+// Tracking re-times each keypoint to its image's middle row with the readout in use (slam/
+// rolling_shutter). With a wrong readout every keyframe is sheared along its own motion, and so
+// are the points it creates; a frame tracked against that map sees much of the shear cancel, which
+// is why the tracking residuals alone read a readout pulled towards the one in use
+// (slam/readout_estimate.hpp: 3 ms in the simulated head turns for a true 25 ms, re-timing with 0).
+// Bundle adjustment frees the points and the window's poses: with the readout as one more unknown,
+// a keypoint re-timed with R0 is predicted at its projection plus (R - R0) times its row's time
+// offset times the point's image motion under its keyframe's own motion, and only the joint fit
+// over keyframes that moved differently separates the shear from the map (the same head turns
+// read 18-19 ms from a window re-timed with 0, and 24.8-25.0 at the truth). Each local
+// adjustment's estimate, when its standard error is small enough, becomes the readout tracking
+// uses, so the map converges with it.
+#include <cstdint>
+#include <vector>
+
+#include "slam/bundle_adjuster.hpp"
+#include "slam/keyframe.hpp"
+#include "slam/map.hpp"
+
+namespace dynanav {
+
+/// One estimate adopted by the online readout: re-timing's readout from `frame` on.
+struct ReadoutStage {
+  int64_t frame = 0;
+  double readout_s = 0.0, sigma_s = 0.0;
+  int window_keyframes = 0;  ///< keyframes of the bundle adjustment that estimated it
+};
+
+/// Makes `problem` estimate the readout from `readout_s` on. `keyframes` is parallel to
+/// problem.keyframes: each observation's shear per second of readout error comes from its
+/// keyframe's motion (KeyFrame::motion; none while that is not known) and the readout its
+/// keypoints were re-timed with (KeyFrame::readout_used_s).
+void addReadoutShear(BaProblem& problem, const std::vector<const KeyFrame*>& keyframes,
+                     double readout_s);
+
+/// Adopts an adjustment's estimate (`problem.readout_s`, `result.readout_sigma_s`) into
+/// `map.readout` when its standard error is below MapReadout::adopt_sigma_s; true when adopted.
+/// Call with the map locked.
+bool adoptReadout(Map& map, const BaProblem& problem, const BaResult& result);
+
+}  // namespace dynanav
