@@ -4,9 +4,6 @@
 #include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
-
 namespace dynanav {
 namespace {
 
@@ -130,36 +127,9 @@ std::vector<uint8_t> classify(const BaProblem& problem) {
   return outlier;
 }
 
-/// Standard error of the readout block with every other free block marginalised: the last
-/// diagonal entry of (J^T J)^-1. A point seen once without depth leaves its ray's depth free;
-/// a relative damping of 1e-9 keeps the solve defined without moving the readout's entry.
-double readoutSigma(ceres::Problem& ceres_problem, std::vector<double*> free_blocks,
-                    double* readout) {
-  free_blocks.push_back(readout);
-  ceres::Problem::EvaluateOptions evaluate_options;
-  evaluate_options.parameter_blocks = free_blocks;
-  evaluate_options.apply_loss_function = true;
-  ceres::CRSMatrix crs;
-  if (!ceres_problem.Evaluate(evaluate_options, nullptr, nullptr, nullptr, &crs))
-    return std::numeric_limits<double>::infinity();
-  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> J(
-      crs.num_rows, crs.num_cols, static_cast<Eigen::Index>(crs.values.size()), crs.rows.data(),
-      crs.cols.data(), crs.values.data());
-  Eigen::SparseMatrix<double> H = Eigen::SparseMatrix<double>(J.transpose()) * J;
-  for (int k = 0; k < H.cols(); ++k) H.coeffRef(k, k) *= 1.0 + 1e-9;
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(H);
-  if (ldlt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
-  Eigen::VectorXd unit = Eigen::VectorXd::Zero(H.cols());
-  unit(H.cols() - 1) = 1.0;
-  const double variance = ldlt.solve(unit)(H.cols() - 1);
-  return variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance)
-                                                   : std::numeric_limits<double>::infinity();
-}
-
-/// One Ceres solve of the problem in place; with `readout_sigma_s` (and the readout estimated)
-/// also the readout's standard error at the solution.
+/// One Ceres solve of the problem in place.
 void solve(BaProblem& problem, const BaOptions& options, int iterations, bool robust,
-           const std::vector<uint8_t>& skip, double* readout_sigma_s = nullptr) {
+           const std::vector<uint8_t>& skip) {
   std::vector<PoseBlock> poses;
   poses.reserve(problem.keyframes.size());
   for (const auto& kf : problem.keyframes) poses.push_back(toBlock(kf.T_camera_world));
@@ -178,7 +148,6 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
   PoseManifold pose_manifold;
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   std::vector<uint8_t> pose_used(poses.size(), 0), point_used(points.size(), 0);
-  std::vector<double*> free_blocks;  // in the order the readout's standard error needs none of
   for (size_t i = 0; i < problem.observations.size(); ++i) {
     if (!skip.empty() && skip[i]) continue;
     const auto& obs = problem.observations[i];
@@ -196,16 +165,12 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
     if (!pose_used[obs.keyframe]) {
       pose_used[obs.keyframe] = 1;
       ceres_problem.SetManifold(pose.x, &pose_manifold);
-      if (problem.keyframes[obs.keyframe].fixed)
-        ceres_problem.SetParameterBlockConstant(pose.x);
-      else
-        free_blocks.push_back(pose.x);
+      if (problem.keyframes[obs.keyframe].fixed) ceres_problem.SetParameterBlockConstant(pose.x);
       ordering->AddElementToGroup(pose.x, 1);
     }
     if (!point_used[obs.point]) {
       point_used[obs.point] = 1;
       ordering->AddElementToGroup(points[obs.point].data(), 0);
-      free_blocks.push_back(points[obs.point].data());
     }
   }
   if (ceres_problem.NumResidualBlocks() == 0) return;
@@ -223,8 +188,6 @@ void solve(BaProblem& problem, const BaOptions& options, int iterations, bool ro
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &ceres_problem, &summary);
-  if (problem.estimate_readout && readout_sigma_s != nullptr)
-    *readout_sigma_s = readoutSigma(ceres_problem, free_blocks, &readout_s);
 
   for (size_t k = 0; k < poses.size(); ++k) {
     if (pose_used[k] && !problem.keyframes[k].fixed)
@@ -260,8 +223,7 @@ BaResult bundleAdjust(BaProblem& problem, const BaOptions& options) {
   // robust loss, then report which observations remain outliers.
   const auto first_outliers = classify(problem);
   if (options.iterations_second > 0)
-    solve(problem, options, options.iterations_second, false, first_outliers,
-          options.readout_sigma ? &result.readout_sigma_s : nullptr);
+    solve(problem, options, options.iterations_second, false, first_outliers);
   result.outlier = classify(problem);
   result.final_rms_px = reprojectionRms(problem, result.outlier);
   return result;

@@ -6,7 +6,6 @@
 // level's inverse variance, Huber loss; after the first pass chi2 outliers are dropped and the
 // rest is refined without the robust loss.
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -56,18 +55,12 @@ struct BaOptions {
   int iterations_first = 5;
   int iterations_second = 10;
   std::string linear_solver = "sparse_schur";  ///< or "dense_schur"
-  /// With BaProblem::estimate_readout: also its standard error (BaResult::readout_sigma_s).
-  bool readout_sigma = true;
 };
 
 struct BaResult {
   std::vector<uint8_t> outlier;  ///< per observation, after the final pass (chi2 or behind camera)
   double initial_rms_px = 0.0;   ///< RMS of the unweighted reprojection error before / after
   double final_rms_px = 0.0;
-  /// With BaProblem::estimate_readout: the readout's standard error (s) under the pixel noise model
-  /// (level-weighted, 1 px at level 0), the poses and points marginalised; infinite when the
-  /// window's motion does not determine it (a still camera).
-  double readout_sigma_s = std::numeric_limits<double>::infinity();
 };
 
 /// Optimises the non-fixed keyframe poses and all points in place.

@@ -33,7 +33,7 @@ GlobalBaSnapshot buildGlobalBa(const Map& map) {
     s.points.push_back(p);
   }
   // The readout is estimated here too, so that the whole map's points end where the local windows
-  // put them; its standard error (a solve of the whole map) is not needed: it is not adopted.
+  // put them (not adopted: tracking has ended, or goes on with the local windows' estimate).
   if (map.readout.estimate) {
     std::vector<const KeyFrame*> keyframes;
     for (const auto& kf : s.keyframes) keyframes.push_back(kf.get());
@@ -96,10 +96,7 @@ GlobalBaRun runGlobalBa(Map& map, const BaOptions& options) {
   GlobalBaRun run;
   run.keyframes = snapshot.problem.keyframes.size();
   run.points = snapshot.problem.points.size();
-  BaOptions global_options = options;
-  global_options.readout_sigma = false;
-  run.result =
-      bundleAdjust(snapshot.problem, global_options);  // without the lock: tracking goes on
+  run.result = bundleAdjust(snapshot.problem, options);  // without the lock: tracking goes on
   std::unique_lock lock(map.mutex());
   applyGlobalBa(snapshot, run.result, map);
   map.removeBad();

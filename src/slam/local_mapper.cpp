@@ -147,9 +147,10 @@ void LocalMapper::localBundleAdjustment(KeyFrame& keyframe) {
   spdlog::debug("local BA kf {}: {} keyframes, {} points, {} observations, rms {:.3f} -> {:.3f} px",
                 keyframe.id, problem.keyframes.size(), problem.points.size(),
                 problem.observations.size(), result.initial_rms_px, result.final_rms_px);
+  const double readout_sigma_s = readoutSigmaS(problem, result.outlier);  // without the lock
   std::unique_lock lock(map_.mutex());
   applyLocalBa(problem, result, index);
-  adoptReadout(map_, problem, result);
+  adoptReadout(map_, problem, readout_sigma_s);
   ++stats_.bundle_adjustments;
 }
 

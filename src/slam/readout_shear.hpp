@@ -9,10 +9,14 @@
 // Bundle adjustment frees the points and the window's poses: with the readout as one more unknown,
 // a keypoint re-timed with R0 is predicted at its projection plus (R - R0) times its row's time
 // offset times the point's image motion under its keyframe's own motion, and only the joint fit
-// over keyframes that moved differently separates the shear from the map (the same head turns
-// read 18-19 ms from a window re-timed with 0, and 24.8-25.0 at the truth). Each local
+// over keyframes that moved differently separates the shear from the map (the simulated head
+// turns read 18-19 ms from a window re-timed with 0, and 24.8-25.0 at the truth 25). Each local
 // adjustment's estimate, when its standard error is small enough, becomes the readout tracking
-// uses, so the map converges with it.
+// and the next adjustment use, so the map converges with it. The readout is a parameter of every
+// residual there, so the solve is slower than without (local BA 1.5 times the time in the head
+// turns); a step computed after an adjustment with the readout held fixed was measured instead and
+// converged slower and worse: the robust pass at a wrong readout drops the rows the shear moves
+// most, the very evidence (docs/dynamics.md, "Session 31").
 #include <cstdint>
 #include <vector>
 
@@ -29,16 +33,23 @@ struct ReadoutStage {
   int window_keyframes = 0;  ///< keyframes of the bundle adjustment that estimated it
 };
 
-/// Makes `problem` estimate the readout from `readout_s` on. `keyframes` is parallel to
-/// problem.keyframes: each observation's shear per second of readout error comes from its
-/// keyframe's motion (KeyFrame::motion; none while that is not known) and the readout its
-/// keypoints were re-timed with (KeyFrame::readout_used_s).
+/// Makes `problem` estimate the readout from `readout_s` on (one parameter shared by every
+/// observation, BaProblem::estimate_readout). `keyframes` is parallel to problem.keyframes: each
+/// observation's shear per second of readout error comes from its keyframe's motion
+/// (KeyFrame::motion; none while that is not known) and the readout its keypoints were re-timed
+/// with (KeyFrame::readout_used_s).
 void addReadoutShear(BaProblem& problem, const std::vector<const KeyFrame*>& keyframes,
                      double readout_s);
 
-/// Adopts an adjustment's estimate (`problem.readout_s`, `result.readout_sigma_s`) into
+/// Standard error (s) of an adjusted problem's readout under the pixel noise model the adjustment
+/// weighs with (1 px at level 0), the free poses and every point marginalised (Schur complement
+/// over the points, then over the poses), from the observations `outlier` does not flag; infinite
+/// when the window's motion leaves the readout undetermined (a still camera).
+double readoutSigmaS(const BaProblem& problem, const std::vector<uint8_t>& outlier);
+
+/// Adopts an adjustment's estimate (`problem.readout_s`, standard error `sigma_s`) into
 /// `map.readout` when its standard error is below MapReadout::adopt_sigma_s; true when adopted.
 /// Call with the map locked.
-bool adoptReadout(Map& map, const BaProblem& problem, const BaResult& result);
+bool adoptReadout(Map& map, const BaProblem& problem, double sigma_s);
 
 }  // namespace dynanav

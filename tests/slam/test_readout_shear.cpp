@@ -3,6 +3,7 @@
 // used, must give back the readout they were seen with; a still window must not decide it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "core/config.hpp"
@@ -108,57 +109,88 @@ const std::vector<CameraVelocity> kTurns = {
     makeVelocity(Vec3(-0.02, 0.04, 0.0), Vec3(-0.01, 0.0, 0.0)),
     makeVelocity(Vec3(0.0, -0.035, 0.01), Vec3::Zero())};
 
+struct Adjusted {
+  double readout_s = 0.0, sigma_s = 0.0;
+  BaResult result;
+};
+
+/// Adjusts the window with the readout as an unknown, starting from `start_s`.
+Adjusted adjustWithReadout(Window& w, double start_s) {
+  addReadoutShear(w.problem, w.views(), start_s);
+  Adjusted a;
+  a.result = bundleAdjust(w.problem, BaOptions{});
+  a.readout_s = w.problem.readout_s;
+  a.sigma_s = readoutSigmaS(w.problem, a.result.outlier);
+  return a;
+}
+
 TEST(ReadoutShear, BundleAdjustmentGivesBackTheReadoutWhateverTheKeyframesWereReTimedWith) {
   for (const double used_s : {0.0, 0.015, 0.025, 0.033}) {
-    Window w = makeWindow(kTurns, 0.025, used_s, 5);
-    addReadoutShear(w.problem, w.views(), 0.010);
-    const BaResult result = bundleAdjust(w.problem, BaOptions{});
-    EXPECT_NEAR(w.problem.readout_s, 0.025, 0.001) << used_s;
-    EXPECT_LT(result.readout_sigma_s, 0.0005) << used_s;
-    EXPECT_LT(result.final_rms_px, 0.8) << used_s;  // the 0.5 px noise per axis, not the shear
+    for (const double start_s : {0.0, 0.025}) {
+      Window w = makeWindow(kTurns, 0.025, used_s, 5);
+      const Adjusted a = adjustWithReadout(w, start_s);
+      EXPECT_NEAR(a.readout_s, 0.025, 0.001) << used_s << " " << start_s;
+      EXPECT_LT(a.sigma_s, 0.0005) << used_s << " " << start_s;
+      EXPECT_LT(a.result.final_rms_px, 0.8) << used_s;  // the 0.5 px noise per axis, not the shear
+    }
   }
 }
 
+TEST(ReadoutShear, TheStandardErrorMatchesTheScatterOverNoise) {
+  // The windows' pixel noise is 0.5 px and the adjustment weighs 1 px: the estimates' scatter over
+  // noise draws should be half the standard error they report (a loose factor: 10 draws).
+  std::vector<double> estimates;
+  double sigma_s = 0.0;
+  for (unsigned seed = 20; seed < 30; ++seed) {
+    Window w = makeWindow(kTurns, 0.025, 0.0, seed);
+    const Adjusted a = adjustWithReadout(w, 0.0);
+    estimates.push_back(a.readout_s);
+    sigma_s += a.sigma_s / 10.0;
+  }
+  double mean = 0.0, scatter = 0.0;
+  for (const double x : estimates) mean += x / 10.0;
+  for (const double x : estimates) scatter += (x - mean) * (x - mean) / 9.0;
+  scatter = std::sqrt(scatter);
+  EXPECT_GT(scatter, 0.2 * sigma_s);
+  EXPECT_LT(scatter, 1.0 * sigma_s);
+}
+
 TEST(ReadoutShear, WithoutTheReadoutTheShearStaysInTheResiduals) {
-  Window w = makeWindow(kTurns, 0.025, 0.0, 6);
-  Window with = w;
-  const BaResult ignored = bundleAdjust(w.problem, BaOptions{});
-  addReadoutShear(with.problem, with.views(), 0.0);
-  const BaResult estimated = bundleAdjust(with.problem, BaOptions{});
-  EXPECT_GT(ignored.final_rms_px, 1.5 * estimated.final_rms_px);
+  Window ignored = makeWindow(kTurns, 0.025, 0.0, 6);
+  Window estimated = ignored;
+  const BaResult ignoring = bundleAdjust(ignored.problem, BaOptions{});
+  const Adjusted estimating = adjustWithReadout(estimated, 0.0);
+  EXPECT_GT(ignoring.final_rms_px, 1.5 * estimating.result.final_rms_px);
 }
 
 TEST(ReadoutShear, AGlobalShutterReadsNoReadout) {
   Window w = makeWindow(kTurns, 0.0, 0.0, 7);
-  addReadoutShear(w.problem, w.views(), 0.010);
-  bundleAdjust(w.problem, BaOptions{});
-  EXPECT_GE(w.problem.readout_s, 0.0);  // bounded: noise must not shear the map the other way
-  EXPECT_LT(w.problem.readout_s, 0.001);
+  const Adjusted a = adjustWithReadout(w, 0.010);
+  EXPECT_GE(a.readout_s, 0.0);  // bounded: noise must not shear the map the other way
+  EXPECT_LT(a.readout_s, 0.001);
 }
 
 TEST(ReadoutShear, AStillWindowLeavesTheReadoutUndeterminedAndUnadopted) {
   const std::vector<CameraVelocity> still(6, makeVelocity(Vec3::Zero(), Vec3::Zero()));
   Window w = makeWindow(still, 0.025, 0.0, 8);
-  addReadoutShear(w.problem, w.views(), 0.010);
-  const BaResult result = bundleAdjust(w.problem, BaOptions{});
-  EXPECT_GT(result.readout_sigma_s, 0.1);  // nothing in the residuals depends on it
+  const Adjusted a = adjustWithReadout(w, 0.010);
+  EXPECT_FALSE(std::isfinite(a.sigma_s));  // nothing in the residuals depends on it
   Map map;
   map.readout.estimate = true;
   map.readout.readout_s = 0.010;
-  EXPECT_FALSE(adoptReadout(map, w.problem, result));
+  EXPECT_FALSE(adoptReadout(map, w.problem, a.sigma_s));
   EXPECT_EQ(map.readout.readout_s, 0.010);
   EXPECT_EQ(map.readout.adopted, 0);
 }
 
 TEST(ReadoutShear, AWellDeterminedEstimateIsAdoptedWithItsWindow) {
   Window w = makeWindow(kTurns, 0.025, 0.0, 9);
-  addReadoutShear(w.problem, w.views(), 0.0);
-  const BaResult result = bundleAdjust(w.problem, BaOptions{});
+  const Adjusted a = adjustWithReadout(w, 0.0);
   Map map;
   map.readout.estimate = true;
-  ASSERT_TRUE(adoptReadout(map, w.problem, result));
+  ASSERT_TRUE(adoptReadout(map, w.problem, a.sigma_s));
   EXPECT_NEAR(map.readout.readout_s, 0.025, 0.001);
-  EXPECT_EQ(map.readout.sigma_s, result.readout_sigma_s);
+  EXPECT_EQ(map.readout.sigma_s, a.sigma_s);
   EXPECT_EQ(map.readout.window_keyframes, 6);
   EXPECT_EQ(map.readout.adopted, 1);
 }
