@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 
 #include "slam/keyframe.hpp"
+#include "slam/rgbd_jacobian.hpp"
 
 namespace dynanav {
 namespace {
@@ -14,22 +15,6 @@ namespace {
 // As pose optimisation: chi2 95 % for 2 dof (pixel) and 3 dof (pixel + virtual right u).
 constexpr double kHuberDelta2Mono = 5.991;
 constexpr double kHuberDelta2Stereo = 7.815;
-
-/// d(u, v, u_right)/d(point in the camera frame) of the RGB-D projection (u_right = u - bf/z).
-Eigen::Matrix<double, 3, 3> projectionJacobian(const PinholeCamera& camera, const Vec3& p) {
-  const double inv_z = 1.0 / p.z();
-  Eigen::Matrix<double, 3, 3> J;
-  J << camera.fx * inv_z, 0.0, -camera.fx * p.x() * inv_z * inv_z,  //
-      0.0, camera.fy * inv_z, -camera.fy * p.y() * inv_z * inv_z,   //
-      camera.fx * inv_z, 0.0, -camera.fx * p.x() * inv_z * inv_z + camera.bf() * inv_z * inv_z;
-  return J;
-}
-
-Mat3 skew(const Vec3& a) {
-  Mat3 S;
-  S << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return S;
-}
 
 /// World-frame shift of a map point per second of readout error, averaged over its observing
 /// keyframes (see the header), and the same weighted by each keyframe's readout used; false when
@@ -89,12 +74,13 @@ ReadoutEvidence readoutEvidence(const Frame& frame, const KeypointMeasurements& 
     const Eigen::Vector2d uv = camera.project(p_row);
     Eigen::Vector3d r(observed.points[i].x - uv.x(), observed.points[i].y - uv.y(),
                       observed.u_right[i] - (uv.x() - camera.bf() / p_row.z()));
-    const Eigen::Matrix<double, 3, 3> J_pi = projectionJacobian(camera, p_row);
+    const Eigen::Matrix<double, 3, 3> J_pi =
+        rgbdProjectionJacobian(camera.fx, camera.fy, camera.bf(), p_row);
     const Mat3 R_row_world = T_row_mid.linear() * frame.T_camera_world.linear();
     Eigen::Matrix<double, 3, 7> J;
     // Pose: left perturbation exp(xi) * T_camera_world, xi = (rho, phi).
     J.block<3, 3>(0, 0) = J_pi * T_row_mid.linear();
-    J.block<3, 3>(0, 3) = -J_pi * T_row_mid.linear() * skew(p_mid);
+    J.block<3, 3>(0, 3) = -J_pi * T_row_mid.linear() * skewSymmetric(p_mid);
     // residual = J_pose xi + (own shear - map shift) R + what the readouts used already explain.
     const Eigen::Vector3d own_shear =
         J_pi * (s * (omega_per_s.cross(T_row_mid.linear() * p_mid) + velocity_mps));

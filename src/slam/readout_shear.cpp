@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "slam/rgbd_jacobian.hpp"
+
 namespace dynanav {
 
 void addReadoutShear(BaProblem& problem, const std::vector<const KeyFrame*>& keyframes,
@@ -24,21 +26,12 @@ void addReadoutShear(BaProblem& problem, const std::vector<const KeyFrame*>& key
     const double row_offset = kf.features.keypoints[obs.keypoint].pt.y / camera.height - 0.5;
     Vec3 dp_per_s = (motion.omega / motion.interval_s).cross(p);
     if (obs.u_right >= 0.0) dp_per_s += motion.translation / motion.interval_s;
-    const double inv_z = 1.0 / p.z();
-    const double du = camera.fx * inv_z * (dp_per_s.x() - p.x() * inv_z * dp_per_s.z());
-    const double dv = camera.fy * inv_z * (dp_per_s.y() - p.y() * inv_z * dp_per_s.z());
-    const double d_inv_z = -inv_z * inv_z * dp_per_s.z();
-    obs.readout_px_per_s = row_offset * Vec3(du, dv, du - camera.bf() * d_inv_z);
+    obs.readout_px_per_s =
+        row_offset * rgbdProjectionJacobian(camera.fx, camera.fy, camera.bf(), p) * dp_per_s;
   }
 }
 
 namespace {
-
-Mat3 skewSymmetric(const Vec3& a) {
-  Mat3 S;
-  S << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return S;
-}
 
 /// One observation's linearisation for the reduced system: d(prediction)/d(point) and
 /// d(prediction)/d(its columns of the reduced system): its keyframe's pose when free, the readout.
@@ -56,11 +49,7 @@ ObservationJacobian linearise(const BaProblem& problem, const BaObservation& obs
   const SE3& T_cw = problem.keyframes[obs.keyframe].T_camera_world;
   const Vec3 p = T_cw * problem.points[obs.point].p_world;
   const int rows = obs.u_right >= 0.0 ? 3 : 2;
-  const double inv_z = 1.0 / p.z();
-  Eigen::Matrix3d J_pi;  // d(u, v, u_right) / d(point in the camera)
-  J_pi << cam.fx * inv_z, 0.0, -cam.fx * p.x() * inv_z * inv_z,  //
-      0.0, cam.fy * inv_z, -cam.fy * p.y() * inv_z * inv_z,      //
-      cam.fx * inv_z, 0.0, -cam.fx * p.x() * inv_z * inv_z + cam.bf * inv_z * inv_z;
+  const Eigen::Matrix3d J_pi = rgbdProjectionJacobian(cam.fx, cam.fy, cam.bf, p);
   J.point = J_pi.topRows(rows) * T_cw.linear();
   J.reduced = Eigen::MatrixXd::Zero(rows, free_slot >= 0 ? 7 : 1);
   if (free_slot >= 0) {

@@ -9,8 +9,8 @@
 // Bundle adjustment frees the points and the window's poses: with the readout as one more unknown,
 // a keypoint re-timed with R0 is predicted at its projection plus (R - R0) times its row's time
 // offset times the point's image motion under its keyframe's own motion, and only the joint fit
-// over keyframes that moved differently separates the shear from the map (the simulated head
-// turns read 18-19 ms from a window re-timed with 0, and 24.8-25.0 at the truth 25). Each local
+// over keyframes that moved differently separates the shear from the map (still attenuated away
+// from the truth, far less: a scratch print in docs/dynamics.md, "Session 31"). Each local
 // adjustment's estimate, when its standard error is small enough, becomes the readout tracking
 // and the next adjustment use, so the map converges with it. The readout is a parameter of every
 // residual there, so the solve is slower than without (local BA 1.5 times the time in the head

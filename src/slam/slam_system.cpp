@@ -40,6 +40,12 @@ SlamSystem::SlamSystem(const Config& config, const PinholeCamera& camera, StageT
       mapping_(
           std::make_unique<MappingStage>(*map_, config.mapping, !config.run.deterministic, timers)),
       tracker_(std::make_unique<Tracker>(*map_, *mapping_, trackingFor(config))) {
+  if (config.tracking.rolling_shutter_online) {
+    // Issue 18: bundle adjustment estimates the readout with the map from the configured one on.
+    map_->readout.estimate = true;
+    map_->readout.readout_s = configuredReadoutS();
+    map_->readout.adopt_sigma_s = config.tracking.rolling_shutter_online_max_sigma_ms * 1e-3;
+  }
   if (trackingFor(config).depth_alignment_samples > 0.0)
     surfaces_ = std::make_unique<DepthSurfaceMaker>(camera, config.tracking.depth_max_m);
   setUpPlaceRecognition();

@@ -117,12 +117,7 @@ double Tracker::readoutFor(const Frame& frame) {
   if (!config_.rolling_shutter_online) return configured_s;
   // Online: bundle adjustment estimates the readout with the map (slam/readout_shear.hpp) and
   // local mapping adopts each well-determined estimate; tracking re-times with the latest.
-  MapReadout& readout = map_.readout;
-  if (!readout.estimate) {
-    readout.estimate = true;
-    readout.readout_s = configured_s;
-    readout.adopt_sigma_s = config_.rolling_shutter_online_max_sigma_ms * 1e-3;
-  }
+  const MapReadout& readout = map_.readout;
   if (readout.adopted > adopted_seen_) {
     adopted_seen_ = readout.adopted;
     online_stages_.push_back(
@@ -130,7 +125,7 @@ double Tracker::readoutFor(const Frame& frame) {
     readout_estimator_.restart();  // the tracking residuals' own estimate, at the new readout
   }
   // A readout longer than the frame interval would overlap the next frame's.
-  online_readout_s_ = std::clamp(readout.readout_s, 0.0, std::max(velocity_interval_s_, 0.0));
+  online_readout_s_ = std::clamp(readout.readout_s, 0.0, velocity_interval_s_);
   return online_stages_.empty() ? configured_s : online_readout_s_;
 }
 

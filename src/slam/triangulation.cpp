@@ -4,15 +4,10 @@
 #include <cmath>
 
 #include "slam/matcher.hpp"
+#include "slam/rgbd_jacobian.hpp"
 
 namespace dynanav {
 namespace {
-
-Mat3 skew(const Vec3& v) {
-  Mat3 m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
 
 /// F_12 with x1^T F_12 x2 = 0 (ORB-SLAM2 ComputeF12).
 Mat3 fundamental(const KeyFrame& kf1, const KeyFrame& kf2, const PinholeCamera& cam) {
@@ -20,7 +15,7 @@ Mat3 fundamental(const KeyFrame& kf1, const KeyFrame& kf2, const PinholeCamera& 
   Mat3 K;
   K << cam.fx, 0, cam.cx, 0, cam.fy, cam.cy, 0, 0, 1;
   const Mat3 K_inv = K.inverse();
-  return K_inv.transpose() * skew(T_12.translation()) * T_12.linear() * K_inv;
+  return K_inv.transpose() * skewSymmetric(T_12.translation()) * T_12.linear() * K_inv;
 }
 
 /// Reprojection check of a new point in one keyframe (chi2 95 %: 5.991 mono, 7.8 with depth).
@@ -73,18 +68,23 @@ std::vector<MapPointPtr> triangulateWithNeighbours(KeyFrame& kf1, Map& map, int 
     const Features& f2 = kf2.features;
     const Mat3 F12 = fundamental(kf1, kf2, cam);
     for (const auto& [i1, i2] : matcher::matchForTriangulation(kf1, kf2, F12, false)) {
-      const Eigen::Vector2d xn1((f1.points[i1].x - cam.cx) / cam.fx, (f1.points[i1].y - cam.cy) / cam.fy);
-      const Eigen::Vector2d xn2((f2.points[i2].x - cam.cx) / cam.fx, (f2.points[i2].y - cam.cy) / cam.fy);
+      const Eigen::Vector2d xn1((f1.points[i1].x - cam.cx) / cam.fx,
+                                (f1.points[i1].y - cam.cy) / cam.fy);
+      const Eigen::Vector2d xn2((f2.points[i2].x - cam.cx) / cam.fx,
+                                (f2.points[i2].y - cam.cy) / cam.fy);
       const Vec3 ray1 = kf1.T_world_camera().linear() * Vec3(xn1.x(), xn1.y(), 1.0);
       const Vec3 ray2 = kf2.T_world_camera().linear() * Vec3(xn2.x(), xn2.y(), 1.0);
       const double cos_rays = ray1.dot(ray2) / (ray1.norm() * ray2.norm());
       const bool stereo1 = f1.u_right[i1] >= 0.f, stereo2 = f2.u_right[i2] >= 0.f;
-      const double cos_stereo1 = stereo1 ? std::cos(2.0 * std::atan2(cam.baseline_m / 2, f1.depth_m[i1])) : 2.0;
-      const double cos_stereo2 = stereo2 ? std::cos(2.0 * std::atan2(cam.baseline_m / 2, f2.depth_m[i2])) : 2.0;
+      const double cos_stereo1 =
+          stereo1 ? std::cos(2.0 * std::atan2(cam.baseline_m / 2, f1.depth_m[i1])) : 2.0;
+      const double cos_stereo2 =
+          stereo2 ? std::cos(2.0 * std::atan2(cam.baseline_m / 2, f2.depth_m[i2])) : 2.0;
       const double cos_stereo = std::min(cos_stereo1, cos_stereo2);
       Vec3 p_world;
       if (cos_rays < cos_stereo && cos_rays > 0.0 && (stereo1 || stereo2 || cos_rays < 0.9998)) {
-        if (!triangulateLinear(xn1, xn2, kf1.T_camera_world(), kf2.T_camera_world(), p_world)) continue;
+        if (!triangulateLinear(xn1, xn2, kf1.T_camera_world(), kf2.T_camera_world(), p_world))
+          continue;
       } else if (stereo1 && cos_stereo1 < cos_stereo2) {
         p_world = kf1.T_world_camera() * f1.backproject(i1);
       } else if (stereo2 && cos_stereo2 < cos_stereo1) {
@@ -97,8 +97,10 @@ std::vector<MapPointPtr> triangulateWithNeighbours(KeyFrame& kf1, Map& map, int 
       const double dist1 = (p_world - center1).norm(), dist2 = (p_world - center2).norm();
       if (dist1 == 0.0 || dist2 == 0.0) continue;
       const double ratio_dist = dist2 / dist1;
-      const double ratio_octave = scales.scale[f1.keypoints[i1].octave] / scales.scale[f2.keypoints[i2].octave];
-      if (ratio_dist * ratio_factor < ratio_octave || ratio_dist > ratio_octave * ratio_factor) continue;
+      const double ratio_octave =
+          scales.scale[f1.keypoints[i1].octave] / scales.scale[f2.keypoints[i2].octave];
+      if (ratio_dist * ratio_factor < ratio_octave || ratio_dist > ratio_octave * ratio_factor)
+        continue;
       auto point = map.createPoint(p_world, &kf1);
       point->addObservation(&kf1, i1);
       point->addObservation(&kf2, i2);
