@@ -91,11 +91,11 @@ std::vector<uint8_t> withinDepthBand(const std::vector<float>& z_m, double band_
   return keep;
 }
 
-std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
-                                         const std::vector<float>& z_m, const cv::Mat& labels,
-                                         uint16_t id, const cv::Mat& depth_m, int reach_px,
-                                         double margin_m) {
-  std::vector<uint8_t> beside(pixels.size(), 0);
+std::vector<NearerSurface> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
+                                               const std::vector<float>& z_m, const cv::Mat& labels,
+                                               uint16_t id, const cv::Mat& depth_m, int reach_px,
+                                               double margin_m) {
+  std::vector<NearerSurface> beside(pixels.size());
   if (reach_px <= 0 || labels.empty() || labels.size() != depth_m.size()) return beside;
   // Two rings, half the reach and the reach, eight directions each.
   std::array<cv::Point2f, 16> probes;
@@ -105,13 +105,17 @@ std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
   }
   for (size_t i = 0; i < pixels.size(); ++i) {
     if (!(z_m[i] > 0.f)) continue;
-    beside[i] = std::any_of(probes.begin(), probes.end(), [&](const cv::Point2f& d) {
+    float nearest_z = z_m[i] - float(margin_m);
+    for (const cv::Point2f& d : probes) {
       const cv::Point2f q = pixels[i] + d;
       const int x = int(std::lround(q.x)), y = int(std::lround(q.y));
-      if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) return false;
+      if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
+      const uint16_t label = labels.at<uint16_t>(y, x);
       const float z = depthAt(depth_m, q);
-      return labels.at<uint16_t>(y, x) != id && z > 0.f && z < z_m[i] - float(margin_m);
-    });
+      if (label == id || !(z > 0.f) || !(z < nearest_z)) continue;
+      nearest_z = z;
+      beside[i] = {true, label};
+    }
   }
   return beside;
 }

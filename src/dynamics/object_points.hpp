@@ -34,14 +34,21 @@ struct ObjectSample {
 ObjectSample sampleObjectPixels(const cv::Mat& labels, const Instance& instance,
                                 const SampleOptions& options);
 
-/// Which of `pixels` (depths `z_m`, 0: none) have, within `reach_px` of them, a pixel of another
-/// label (not `id`) whose depth is nearer by more than `margin_m`: a nearer surface whose motion
-/// the dense flow's patches there carry along (probed on two rings, reach/2 and reach, in eight
-/// directions). Pixels without depth are never flagged.
-std::vector<uint8_t> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
-                                         const std::vector<float>& z_m, const cv::Mat& labels,
-                                         uint16_t id, const cv::Mat& depth_m, int reach_px,
-                                         double margin_m);
+/// A surface of another label nearer than a point, within the dense flow's reach of it: the flow's
+/// patches there carry that surface's motion along.
+struct NearerSurface {
+  bool found = false;
+  uint16_t label = 0;  ///< its label (0: no instance, the static scene)
+};
+
+/// For each of `pixels` (depths `z_m`, 0: none), a pixel within `reach_px` of it of another label
+/// (not `id`) whose depth is nearer by more than `margin_m`, probed on two rings, reach/2 and
+/// reach, in eight directions; of several, the nearest in depth (what occludes the point most).
+/// Pixels without depth never have one.
+std::vector<NearerSurface> besideNearerSurface(const std::vector<cv::Point2f>& pixels,
+                                               const std::vector<float>& z_m, const cv::Mat& labels,
+                                               uint16_t id, const cv::Mat& depth_m, int reach_px,
+                                               double margin_m);
 
 /// -1 when the instance touches the image's left edge, +1 the right edge, 0 neither (or both):
 /// an object cut by the image's side shows only part of itself.

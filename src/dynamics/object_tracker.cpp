@@ -37,6 +37,11 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
         estimateFloorPlane(input.depth_m, input.camera, worldUpInCamera(input.T_world_camera)),
         input.T_world_camera);
   }
+  // Which of the last frame's instances were tracked moving (before this frame's updates).
+  previous_moving_labels_.clear();
+  for (const Track& t : tracks_)
+    if (t.instance != 0 && !t.stationary && !isSlow(t.filter.velocity()))
+      previous_moving_labels_.push_back(t.instance);
   // 1. Every track's points into this frame along the shared flow.
   std::vector<Carried> carried(tracks_.size());
   for (size_t k = 0; k < tracks_.size(); ++k) {
@@ -60,10 +65,17 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
     if (instance) claimed[size_t(match[k])] = 1;
     update(tracks_[k], carried[k], instance, input);
   }
-  // 4. Tracks unseen for too long, or whose points all left, end.
-  std::erase_if(tracks_, [&](const Track& t) {
-    return t.missed > config_.max_missed_frames ||
-           (t.missed > 0 && t.pixels.size() + t.voters.size() < 4);
+  // 4. Tracks unseen for too long, or whose points all left, end; those out of view are
+  // remembered for a while (the head turns back, the walker comes back in).
+  std::erase_if(out_of_view_, [&](const Track& t) {
+    return input.stamp_s - t.last_stamp_s > config_.recall_out_of_view_s;
+  });
+  std::erase_if(tracks_, [&](Track& t) {
+    const bool ends = t.missed > config_.max_missed_frames ||
+                      (t.missed > 0 && t.pixels.size() + t.voters.size() < 4);
+    if (ends && config_.recall_out_of_view_s > 0.0 && input.tracked && leftView(t, input))
+      out_of_view_.push_back(std::move(t));
+    return ends;
   });
   // 5. Instances no track claimed start new tracks (fresh ids, never reused).
   for (size_t m = 0; m < items.size(); ++m)
@@ -184,18 +196,33 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   if (dt > 0.0) {
     // Points that lay beside a nearer surface moved with it in the flow (a walker coming out
     // from behind another took the other's motion): the motion is fitted without them while
-    // enough others remain (with fewer, all are fitted: no motion at all cost more, a walker
-    // coming out from behind a cabinet then read its sliding centre alone, docs/tracking.md
-    // "Session 30").
-    size_t clear_points = 0;
-    for (uint8_t beside : kept.beside_nearer) clear_points += beside ? 0 : 1;
+    // enough others remain. With fewer, all are fitted when what they lie beside stands (its
+    // flow under-reads the object's own motion but keeps its direction: no motion at all cost
+    // more, a walker coming out from behind a cabinet then read its sliding centre alone,
+    // docs/tracking.md "Session 30"), and none when most lie beside an instance tracked moving
+    // (the flow there is that mover's: a walker emerging from behind another read 1.4-2.3 m/s
+    // of the other's motion sideways, "Session 32").
+    size_t clear_points = 0, beside_points = 0, beside_movers = 0;
+    for (const NearerSurface& beside : kept.beside_nearer) {
+      if (!beside.found) {
+        ++clear_points;
+        continue;
+      }
+      ++beside_points;
+      if (beside.label != 0 &&
+          std::ranges::find(previous_moving_labels_, beside.label) != previous_moving_labels_.end())
+        ++beside_movers;
+    }
     const bool skip_beside =
         config_.motion_skips_nearer_edge && clear_points >= size_t(config_.min_motion_points);
+    const bool beside_mover = config_.motion_skips_nearer_edge &&
+                              config_.motion_not_beside_movers && !skip_beside &&
+                              2 * beside_movers > beside_points;
     std::vector<Vec3> fit_p_prev;
     std::vector<Eigen::Vector2d> fit_rays;
     std::vector<double> fit_depth_m;
-    for (size_t i = 0; i < kept_rays.size(); ++i) {
-      if (skip_beside && kept.beside_nearer[i]) continue;
+    for (size_t i = 0; i < kept_rays.size() && !beside_mover; ++i) {
+      if (skip_beside && kept.beside_nearer[i].found) continue;
       fit_p_prev.push_back(kept.p_prev_world[i]);
       fit_rays.emplace_back(kept_rays[i].x, kept_rays[i].y);
       fit_depth_m.push_back(kept_depth_m[i]);

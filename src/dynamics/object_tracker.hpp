@@ -55,9 +55,9 @@ class ObjectTracker {
     bool prior_dynamic = true;        // a class that moves by itself (prior_dynamic_classes)
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
-    // Per point: a nearer surface lies within the flow's reach of it in the last frame, so the
-    // flow that carries it into this one carries that surface's motion too (not fitted).
-    std::vector<uint8_t> beside_nearer;
+    // Per point: a nearer surface within the flow's reach of it in the last frame, whose motion
+    // the flow that carries it into this one carries too (not fitted).
+    std::vector<NearerSurface> beside_nearer;
     // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
     // flow only to vote in the association, so such a track survives a missed frame.
     std::vector<cv::Point2f> voters;
@@ -100,7 +100,7 @@ class ObjectTracker {
   };
   struct Carried {  // one track's points carried into this frame
     std::vector<Vec3> p_prev_world;
-    std::vector<uint8_t> beside_nearer;  // Track::beside_nearer of each
+    std::vector<NearerSurface> beside_nearer;  // Track::beside_nearer of each
     std::vector<Eigen::Vector2d> pixels;
     std::vector<Eigen::Vector2d> voters;  // Track::voters carried (no 3D)
   };
@@ -109,6 +109,13 @@ class ObjectTracker {
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
+  /// The track ends while out of the camera's view: its centre projects outside the image (or
+  /// behind the camera), or the image's side cut it when it was last seen.
+  [[nodiscard]] bool leftView(const Track& track, const ObjectTrackerInput& input) const;
+  /// The id of a remembered track that left the view (recall_out_of_view_s) of `class_name` that
+  /// could have got to `p_world` by `stamp_s` (taken out of the memory); none when none could.
+  std::optional<uint64_t> recall(const std::string& class_name, const Vec3& p_world,
+                                 double stamp_s);
   /// Which part of the object this frame's centre measures (`seen`: the segmenter saw it;
   /// `ranged`: placed by the height range).
   [[nodiscard]] Track::CentreRule centreRule(const Track& track, bool seen, bool ranged) const;
@@ -154,6 +161,10 @@ class ObjectTracker {
   /// Noise (m) of a centre component the visible part does not measure (an object cut by the
   /// image's side: sideways; a person without the trunk in view: the height): a body's size.
   static constexpr double kUnmeasuredSigmaM = 1.0;
+  /// A track recalled after leaving the view may be this far from where it was last placed (m,
+  /// a centre's error and a step), plus its speed and this change of pace (m/s) for the time away.
+  static constexpr double kRecallPositionMarginM = 0.5;
+  static constexpr double kRecallSpeedMarginMps = 0.5;
   /// A new track's velocity prior (m/s): a walker's speed is 0-2 m/s.
   static constexpr double kInitialVelocitySigmaMps = 1.0;
   /// 99.9 % quantile of the chi-square distribution with 3 degrees of freedom: a position
@@ -167,12 +178,18 @@ class ObjectTracker {
   std::vector<std::string> prior_dynamic_classes_;
   uint64_t next_id_ = 1;
   std::vector<Track> tracks_;  // ordered by id
+  /// Tracks that ended out of view, remembered for recall_out_of_view_s (oldest first); not
+  /// reported while out of view.
+  std::vector<Track> out_of_view_;
   cv::Mat previous_labels_;
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
   /// This frame's floor seen from the camera (floor_plane.hpp: this frame's fit averaged over
   /// the frames before), fitted once per frame with anything to track; none: no floor found.
   std::optional<CameraFloor> floor_;
   FloorAverage floor_average_;
+  /// The last frame's instances tracked moving (their labels): a nearer surface beside a
+  /// track's points that moves by itself (object_tracker.cpp, the motion fit).
+  std::vector<uint16_t> previous_moving_labels_;
 };
 
 }  // namespace dynanav

@@ -160,7 +160,7 @@ void ObjectTracker::lift(Track& track, const std::vector<cv::Point2f>& pixels,
   // footprint from it (only the motion fit uses the flag).
   const int flow_reach_px =
       config_.motion_skips_nearer_edge ? sharedFlowFootprintPx(config_.flow_finest_scale) / 2 : 0;
-  const std::vector<uint8_t> beside =
+  const std::vector<NearerSurface> beside =
       besideNearerSurface(pixels, z, input.instances.labels, track.instance, input.depth_m,
                           flow_reach_px, config_.depth_band_m);
   for (size_t i = 0; i < pixels.size(); ++i) {

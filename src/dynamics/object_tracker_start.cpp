@@ -2,6 +2,8 @@
 
 // A new track (its first centre, filter and motion) and the settings every track's filter and
 // rigid motion use (object_tracker.cpp updates the tracks).
+#include <limits>
+
 #include "dynamics/keypoint_dynamics.hpp"
 #include "dynamics/object_points.hpp"
 
@@ -48,6 +50,40 @@ bool ObjectTracker::filterKnownSlow(const Track& track) const {
   return filterVelocityKnown(track) && isSlow(track.filter.velocity());
 }
 
+bool ObjectTracker::leftView(const Track& track, const ObjectTrackerInput& input) const {
+  if (track.cut_side != 0) return true;
+  const Vec3 p_camera = input.T_world_camera.inverse() * track.filter.position();
+  if (!(p_camera.z() > 0.0)) return true;
+  const Eigen::Vector2d px = input.camera.project(p_camera);
+  return !input.camera.inImage(px.x(), px.y());
+}
+
+std::optional<uint64_t> ObjectTracker::recall(const std::string& class_name, const Vec3& p_world,
+                                              double stamp_s) {
+  // Where it could have got to since it was last placed: out of view the filter's constant
+  // velocity says little (a walker turns: a simulated head-turns walker came back 1.4 m off it
+  // after 0.8 s), so a disc around the last position, as far as its speed and a walker's change
+  // of pace carry it; of several, the nearest.
+  std::optional<size_t> best;
+  double best_m = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < out_of_view_.size(); ++k) {
+    const Track& r = out_of_view_[k];
+    if (r.class_name != class_name || r.ranged_scale_sigma > 0.0) continue;
+    const double away_s = std::max(0.0, stamp_s - r.last_stamp_s);
+    const double speed_mps = r.stationary ? 0.0 : r.filter.velocity().norm();
+    const double reach_m = kRecallPositionMarginM + (speed_mps + kRecallSpeedMarginMps) * away_s;
+    const double d_m = (p_world - r.filter.position()).norm();
+    if (d_m <= reach_m && d_m < best_m) {
+      best_m = d_m;
+      best = k;
+    }
+  }
+  if (!best) return std::nullopt;
+  const uint64_t id = out_of_view_[*best].id;
+  out_of_view_.erase(out_of_view_.begin() + std::ptrdiff_t(*best));
+  return id;
+}
+
 std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instance,
                                                          const ObjectTrackerInput& input) {
   if (!input.tracked) return std::nullopt;
@@ -65,7 +101,8 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   const auto centre = measureCentre(t, p_camera, &instance, input);
   if (!centre) return std::nullopt;
   t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
-  t.filter = KalmanCv(input.T_world_camera * centre->p_camera, filterNoise(), centre->cov_world);
+  const Vec3 p_world = input.T_world_camera * centre->p_camera;
+  t.filter = KalmanCv(p_world, filterNoise(), centre->cov_world);
   t.centre_rule = centreRule(t, true, centre->scale_sigma > 0.0);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = input.dynamics.foundMoving(instance.id);
@@ -75,7 +112,12 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   if (input.dynamics.foundStatic(instance.id) || (!t.prior_dynamic && !moving))
     t.still = config_.static_after_frames;
   t.stationary = t.still >= config_.static_after_frames;
-  t.id = next_id_++;
+  // The id of a track that left the view and could have got here (its filter is not taken
+  // back: out of view its prediction drifted); not for a person placed by its height alone,
+  // whose distance rests on a stature.
+  const std::optional<uint64_t> recalled =
+      centre->scale_sigma <= 0.0 ? recall(t.class_name, p_world, input.stamp_s) : std::nullopt;
+  t.id = recalled ? *recalled : next_id_++;
   // Moving from its first frame (not placed by its height): its motion since the previous
   // frame, from that frame's points the flow carries onto its mask (first_motion.hpp). One
   // entering at the image's side measures only its velocity across the line of sight: the

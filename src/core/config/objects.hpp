@@ -11,12 +11,14 @@ struct ObjectTrackingConfig {
   int max_points = 400;
   int trunk_min_points = 20;
   int max_missed_frames = 15;
+  double recall_out_of_view_s = 2.0;
   bool gate_missed = true;
   bool restart_beyond_gate = true;
   bool reanchor_on_rule_change = true;
   bool first_frame_motion = true;
   bool first_motion_cut_across_ray = true;
   bool motion_skips_nearer_edge = true;
+  bool motion_not_beside_movers = true;
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   int flow_refinement_iterations = 0;
@@ -52,6 +54,12 @@ struct ObjectTrackingConfig {
     v("max_missed_frames", max_missed_frames,
       "a track the segmenter misses is carried by its flow points for at most this many frames",
       Range{0, 1000});
+    v("recall_out_of_view_s", recall_out_of_view_s,
+      "a track that ends because it left the field of view (the head turned away, or it walked "
+      "out at the side) is remembered this long (s; 0: not at all): a new instance of its class "
+      "found where it could have got to meanwhile (0.5 m + (its speed + 0.5 m/s) x the time "
+      "away from where it was last placed) takes its id back instead of a new one",
+      Range{0.0, 60.0});
     v("gate_missed", gate_missed,
       "a track the segmenter misses takes its flow points' centre and motion only when they lie "
       "within the filter's 99.9 % chi-square gate; otherwise it coasts on its prediction");
@@ -80,6 +88,11 @@ struct ObjectTrackingConfig {
       "nearer): there the flow carries the nearer surface's motion (a walker coming out from "
       "behind another read the other's 1 m/s across the line of sight), unless fewer than "
       "min_motion_points others remain (docs/tracking.md 'Session 30')");
+    v("motion_not_beside_movers", motion_not_beside_movers,
+      "with fewer than min_motion_points clear of nearer surfaces, an object whose points lie "
+      "mostly beside an instance tracked moving gets no rigid motion that frame (the flow there "
+      "is that mover's: a walker emerging from behind another read its speed); beside a standing "
+      "surface they are all fitted as before (docs/tracking.md 'Session 32')");
     v("centre_min_points", centre_min_points,
       "fewest points with depth that place an object's centre (fewer: no centre this frame)",
       Range{1, 100000});
