@@ -67,14 +67,16 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
   }
   // 4. Tracks unseen for too long, or whose points all left, end; those out of view are
   // remembered for a while (the head turns back, the walker comes back in).
-  std::erase_if(out_of_view_, [&](const Track& t) {
-    return input.stamp_s - t.last_stamp_s > config_.recall_out_of_view_s;
+  std::erase_if(out_of_view_, [&](const OutOfView& r) {
+    return input.stamp_s - r.left_s > config_.recall_out_of_view_s;
   });
-  std::erase_if(tracks_, [&](Track& t) {
+  std::erase_if(tracks_, [&](const Track& t) {
     const bool ends = t.missed > config_.max_missed_frames ||
                       (t.missed > 0 && t.pixels.size() + t.voters.size() < 4);
-    if (ends && config_.recall_out_of_view_s > 0.0 && input.tracked && leftView(t, input))
-      out_of_view_.push_back(std::move(t));
+    if (ends && config_.recall_out_of_view_s > 0.0 && input.tracked &&
+        t.ranged_scale_sigma <= 0.0 && leftView(t, input))
+      out_of_view_.push_back({t.id, t.class_name, t.filter.position(),
+                              t.stationary ? 0.0 : t.filter.velocity().norm(), t.last_stamp_s});
     return ends;
   });
   // 5. Instances no track claimed start new tracks (fresh ids, never reused).

@@ -178,9 +178,18 @@ class ObjectTracker {
   std::vector<std::string> prior_dynamic_classes_;
   uint64_t next_id_ = 1;
   std::vector<Track> tracks_;  // ordered by id
+  /// A track that ended out of view, as recall() needs it (where and how fast it last was).
+  struct OutOfView {
+    uint64_t id = 0;
+    std::string class_name;
+    Vec3 p_world = Vec3::Zero();  ///< its filter's last position
+    double speed_mps = 0.0;       ///< its filter's last speed (0 when held still)
+    double left_s = 0.0;          ///< time of its last frame
+  };
   /// Tracks that ended out of view, remembered for recall_out_of_view_s (oldest first); not
-  /// reported while out of view.
-  std::vector<Track> out_of_view_;
+  /// reported while out of view. (A person placed by its height alone is not remembered: its
+  /// distance rests on a stature.)
+  std::vector<OutOfView> out_of_view_;
   cv::Mat previous_labels_;
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
   /// This frame's floor seen from the camera (floor_plane.hpp: this frame's fit averaged over

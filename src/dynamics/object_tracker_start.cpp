@@ -67,12 +67,11 @@ std::optional<uint64_t> ObjectTracker::recall(const std::string& class_name, con
   std::optional<size_t> best;
   double best_m = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < out_of_view_.size(); ++k) {
-    const Track& r = out_of_view_[k];
-    if (r.class_name != class_name || r.ranged_scale_sigma > 0.0) continue;
-    const double away_s = std::max(0.0, stamp_s - r.last_stamp_s);
-    const double speed_mps = r.stationary ? 0.0 : r.filter.velocity().norm();
-    const double reach_m = kRecallPositionMarginM + (speed_mps + kRecallSpeedMarginMps) * away_s;
-    const double d_m = (p_world - r.filter.position()).norm();
+    const OutOfView& r = out_of_view_[k];
+    if (r.class_name != class_name) continue;
+    const double away_s = std::max(0.0, stamp_s - r.left_s);
+    const double reach_m = kRecallPositionMarginM + (r.speed_mps + kRecallSpeedMarginMps) * away_s;
+    const double d_m = (p_world - r.p_world).norm();
     if (d_m <= reach_m && d_m < best_m) {
       best_m = d_m;
       best = k;
