@@ -61,7 +61,7 @@ bool ObjectTracker::leftView(const Track& track, const ObjectTrackerInput& input
 std::optional<uint64_t> ObjectTracker::recall(const std::string& class_name, const Vec3& p_world,
                                               double stamp_s) {
   // Where it could have got to since it was last placed: out of view the filter's constant
-  // velocity says little (a walker turns: a simulated head-turns walker came back 1.4 m off it
+  // velocity says little (a walker turns: a simulated head-turns walker came back 1.5 m off it
   // after 0.8 s), so a disc around the last position, as far as its speed and a walker's change
   // of pace carry it; of several, the nearest.
   std::optional<size_t> best;
