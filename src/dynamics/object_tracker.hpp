@@ -56,7 +56,8 @@ class ObjectTracker {
     std::vector<cv::Point2f> pixels;  // in the last frame
     std::vector<Vec3> p_world;        // lifted with the last frame's depth
     // Per point: a nearer surface within the flow's reach of it in the last frame, whose motion
-    // the flow that carries it into this one carries too (not fitted).
+    // the flow that carries it into this one carries too (left out of the motion fit, or, when
+    // it is a mover, no fit at all: object_tracker.cpp).
     std::vector<NearerSurface> beside_nearer;
     // Sampled pixels without usable depth (a walker beyond the sensor's range): carried by the
     // flow only to vote in the association, so such a track survives a missed frame.

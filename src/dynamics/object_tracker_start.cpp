@@ -62,8 +62,8 @@ std::optional<uint64_t> ObjectTracker::recall(const std::string& class_name, con
                                               double stamp_s) {
   // Where it could have got to since it was last placed: out of view the filter's constant
   // velocity says little (a walker turns: a simulated head-turns walker came back 1.5 m off it
-  // after 0.8 s), so a disc around the last position, as far as its speed and a walker's change
-  // of pace carry it; of several, the nearest.
+  // after 0.8 s, docs/tracking.md "Session 32"), so a disc around the last position, as far as its
+  // speed and a walker's change of pace carry it; of several, the nearest.
   std::optional<size_t> best;
   double best_m = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < out_of_view_.size(); ++k) {
