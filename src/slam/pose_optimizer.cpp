@@ -8,6 +8,8 @@
 #include <limits>
 #include <optional>
 
+#include "slam/rgbd_jacobian.hpp"
+
 namespace dynanav {
 namespace {
 
@@ -96,13 +98,9 @@ class PoseResiduals {
       for (int k = 0; k < dims; ++k) residuals[item.row + k] = scale * e[k];
       if (!jacobian) continue;
       // d(residual)/dp = -weight * d(projection)/dp; dp/d(omega) = -[p]x, dp/dt = I (left update).
-      const double inv_z2 = inv_z * inv_z;
-      Eigen::Matrix<double, 3, 3> dproj;
-      dproj << camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2,  //
-          0.0, camera_.fy * inv_z, -camera_.fy * p.y() * inv_z2,       //
-          camera_.fx * inv_z, 0.0, -camera_.fx * p.x() * inv_z2 + camera_.bf * inv_z2;
+      const Eigen::Matrix3d dproj = rgbdProjectionJacobian(camera_.fx, camera_.fy, camera_.bf, p);
       Eigen::Matrix<double, 3, 6> dp;
-      dp.leftCols<3>() << 0.0, p.z(), -p.y(), -p.z(), 0.0, p.x(), p.y(), -p.x(), 0.0;
+      dp.leftCols<3>() = -skewSymmetric(p);
       dp.rightCols<3>().setIdentity();
       const Eigen::Matrix<double, 3, 6> J = (-item.weight * scale) * dproj * dp;
       for (int k = 0; k < dims; ++k)
