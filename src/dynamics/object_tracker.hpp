@@ -21,6 +21,7 @@
 #include "dynamics/floor_plane.hpp"
 #include "dynamics/frame_dynamics.hpp"
 #include "dynamics/kalman_cv.hpp"
+#include "dynamics/object_flow.hpp"
 #include "dynamics/object_points.hpp"
 #include "perception/instances.hpp"
 
@@ -36,6 +37,9 @@ struct ObjectTrackerInput {
   const SE3& T_world_camera;
   bool tracked = false;  ///< camera pose valid: without it no motion is estimated
   const PinholeCamera& camera;
+  /// This frame's half-size grey image (FramePrep's grey_half): each object's own flow
+  /// (object_flow.hpp) is computed on it and the last frame's. Empty: the shared flow alone.
+  cv::Mat grey_half = {};
 };
 
 class ObjectTracker {
@@ -107,6 +111,14 @@ class ObjectTracker {
   };
 
   std::vector<int> associate(const ObjectTrackerInput& input, const std::vector<Carried>& carried);
+  /// The track's points carried into this frame by the shared flow, or where `own` covers them
+  /// by its own (the voters always by the shared flow).
+  static Carried carry(const Track& track, const ObjectTrackerInput& input,
+                       const CroppedFlow* own = nullptr);
+  /// The object's own flow from its last mask to `instance`'s (object_flow.hpp); empty when off
+  /// or without the last frame's image.
+  CroppedFlow ownFlow(const Track& track, const Instance& instance,
+                      const ObjectTrackerInput& input);
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
@@ -192,6 +204,9 @@ class ObjectTracker {
   /// distance rests on a stature.)
   std::vector<OutOfView> out_of_view_;
   cv::Mat previous_labels_;
+  cv::Mat previous_grey_half_;           // the last frame's (ObjectTrackerInput::grey_half)
+  cv::Mat previous_depth_m_;             // the last frame's depth (own_flow only)
+  cv::Ptr<cv::DISOpticalFlow> own_dis_;  // each object's own flow (object_flow.hpp)
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
   /// This frame's floor seen from the camera (floor_plane.hpp: this frame's fit averaged over
   /// the frames before), fitted once per frame with anything to track; none: no floor found.

@@ -203,7 +203,7 @@ void System::trackObjects(const PreparedFrame& prep, const RgbdFrame& input, con
   const SE3 T_world_camera = frame.T_camera_world.inverse();
   result.objects = tracker_->track({input.index, input.stamp_s, result.instances, *result.dynamics,
                                     prep.flow_half, input.depth_m, T_world_camera,
-                                    outcome.state == TrackingState::kOk, camera_});
+                                    outcome.state == TrackingState::kOk, camera_, prep.grey_half});
 }
 
 void System::giveFeedback(const RgbdFrame& input, const Frame& frame, const TrackOutcome& outcome,

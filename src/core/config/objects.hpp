@@ -22,6 +22,8 @@ struct ObjectTrackingConfig {
   int centre_min_points = 8;
   int flow_finest_scale = 1;
   int flow_refinement_iterations = 0;
+  bool own_flow = true;
+  int own_flow_fill_offset = 64;
   bool floor_contact_range = true;
   double vertical_speed_sigma_mps = 0.3;
   double match_min_score = 0.3;
@@ -105,6 +107,15 @@ struct ObjectTrackingConfig {
       "ultrafast preset's none; 5: the fast preset's): fills in what the patch search under-reads "
       "on low-texture surfaces such as smooth clothes, at a cost per pixel",
       Range{0, 100});
+    v("own_flow", own_flow,
+      "each object seen in both frames (a person: its trunk) is carried by its own flow: DIS on "
+      "a crop around it with every pixel off its mask and not nearer than it set to one flat "
+      "grey, so the patches do not average its motion with the background's (the shared flow "
+      "under-read a side-on walker by about a quarter, docs/tracking.md 'Session 33')");
+    v("own_flow_fill_offset", own_flow_fill_offset,
+      "grey levels between the object's mean brightness and the flat grey set off its mask "
+      "(its outline's contrast in the own flow)",
+      Range{1, 255});
     v("floor_contact_range", floor_contact_range,
       "a person beyond the depth sensor's range is placed where its soles meet the floor (a "
       "plane fitted to the depth of the image's lower part, averaged in the world frame) instead "
