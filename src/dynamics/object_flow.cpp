@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/median.hpp"
+#include "dynamics/object_points.hpp"
+
 namespace dynanav {
 namespace {
 
@@ -86,6 +89,32 @@ CroppedFlow objectFlow(const ObjectView& previous, const ObjectView& current, cv
   out.origin_half = crop_was.tl();
   out.shift_half = shift_half;
   return out;
+}
+
+cv::Point medianShiftHalf(const cv::Mat& flow_half, cv::Size image_size,
+                          const std::vector<cv::Point2f>& pixels) {
+  if (flow_half.empty()) return {0, 0};
+  std::vector<float> dx, dy;
+  for (const cv::Point2f& px : pixels) {
+    cv::Point2f moved = px;
+    if (!carryByFlow(flow_half, image_size, moved)) continue;
+    dx.push_back(0.5f * (moved.x - px.x));
+    dy.push_back(0.5f * (moved.y - px.y));
+  }
+  if (dx.empty()) return {0, 0};
+  return {int(std::lround(medianInPlace(dx))), int(std::lround(medianInPlace(dy)))};
+}
+
+double hidingDepthM(const cv::Mat& depth_m, const cv::Mat& labels, uint16_t label, cv::Rect box,
+                    double band_m) {
+  if (depth_m.size() != labels.size()) return 0.0;
+  std::vector<float> z;
+  box &= cv::Rect(0, 0, labels.cols, labels.rows);
+  for (int y = box.y; y < box.br().y; y += 4)
+    for (int x = box.x; x < box.br().x; x += 4)
+      if (labels.at<uint16_t>(y, x) == label && depth_m.at<float>(y, x) > 0.f)
+        z.push_back(depth_m.at<float>(y, x));
+  return z.empty() ? 0.0 : double(medianInPlace(z)) - band_m;
 }
 
 bool carryByCroppedFlow(const CroppedFlow& flow, cv::Size image_size, cv::Point2f& pixel) {

@@ -7,6 +7,7 @@
 // object's own texture and its outline, which move with it.
 #include <opencv2/core.hpp>
 #include <opencv2/video/tracking.hpp>
+#include <vector>
 
 namespace dynanav {
 
@@ -49,6 +50,17 @@ CroppedFlow objectFlow(const ObjectView& previous, const ObjectView& current, cv
 /// neither the object's nor a nearer surface's set to `fill` (a half-size pixel is judged by
 /// the full-size pixel at its top-left).
 cv::Mat objectCrop(const ObjectView& view, cv::Rect crop_half, uint8_t fill);
+
+/// The median motion of `pixels` (full size) along the shared half-size flow, rounded to whole
+/// half-size pixels ((0, 0) without flow or without a pixel it carries).
+cv::Point medianShiftHalf(const cv::Mat& flow_half, cv::Size image_size,
+                          const std::vector<cv::Point2f>& pixels);
+
+/// The depth nearer than which a surface hides the object `label` (its mask inside `box`, every
+/// 4th pixel and row with depth): their median depth less `band_m` (besideNearerSurface's test);
+/// 0 (none) without depth.
+double hidingDepthM(const cv::Mat& depth_m, const cv::Mat& labels, uint16_t label, cv::Rect box,
+                    double band_m);
 
 /// Where `pixel` (full size) of the previous frame is in this one, by `flow` (as carryByFlow
 /// does with the whole half-size field); false when it lies outside the crop or the image.

@@ -108,7 +108,8 @@ struct ObjectTrackingConfig {
       "on low-texture surfaces such as smooth clothes, at a cost per pixel",
       Range{0, 100});
     v("own_flow", own_flow,
-      "each object seen in both frames (a person: its trunk) is carried by its own flow: DIS on "
+      "each moving object seen in both frames (a person: its trunk) is carried by its own flow: "
+      "DIS on "
       "a crop around it with every pixel off its mask and not nearer than it set to one flat "
       "grey, so the patches do not average its motion with the background's (the shared flow "
       "under-read a side-on walker by about a quarter, docs/tracking.md 'Session 33')");
