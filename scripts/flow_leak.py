@@ -47,6 +47,15 @@ def read_poses(seq):
     return poses
 
 
+def read_objects(seq):
+    """objects_gt.jsonl as {stamp: {id: object}}."""
+    objects = {}
+    for line in open(seq + '/objects_gt.jsonl'):
+        d = json.loads(line)
+        objects[d['t']] = {o['id']: o for o in d['objects']}
+    return objects
+
+
 def nearest(stamped, t):
     return stamped[min(stamped, key=lambda s: abs(s - t))]
 
@@ -63,10 +72,7 @@ def main():
     seq, stamps = sys.argv[1], [float(x) for x in sys.argv[2].split(',')]
     fx, fy, cx, cy, depth_factor = read_camera(seq)
     poses = read_poses(seq)
-    objects = {}
-    for line in open(seq + '/objects_gt.jsonl'):
-        d = json.loads(line)
-        objects[d['t']] = {o['id']: o for o in d['objects']}
+    objects = read_objects(seq)
     dis = cv2.DISOpticalFlow_create(cv2.DISOpticalFlow_PRESET_ULTRAFAST)
     dis.setFinestScale(1)
     dis.setPatchSize(8)

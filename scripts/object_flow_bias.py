@@ -20,7 +20,6 @@ simulator's pinhole camera without distortion (camera.yaml).
 Usage: dynanav simulate --scenario office --seed 1 --frames 240 --out SEQ
        python3 scripts/object_flow_bias.py SEQ
 """
-import json
 import os
 import sys
 
@@ -28,7 +27,7 @@ import cv2
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from flow_leak import image_name, nearest, read_camera, read_poses  # noqa: E402
+from flow_leak import image_name, nearest, read_camera, read_objects, read_poses  # noqa: E402
 
 
 def shared_flow_dis():
@@ -49,10 +48,7 @@ def main():
     seq = sys.argv[1]
     fx, fy, cx, cy, depth_factor = read_camera(seq)
     poses = read_poses(seq)
-    objects = {}
-    for line in open(seq + '/objects_gt.jsonl'):
-        d = json.loads(line)
-        objects[d['t']] = {o['id']: o for o in d['objects']}
+    objects = read_objects(seq)
     stamps = sorted(objects)
 
     def load(t):
