@@ -105,18 +105,6 @@ cv::Point medianShiftHalf(const cv::Mat& flow_half, cv::Size image_size,
   return {int(std::lround(medianInPlace(dx))), int(std::lround(medianInPlace(dy)))};
 }
 
-double hidingDepthM(const cv::Mat& depth_m, const cv::Mat& labels, uint16_t label, cv::Rect box,
-                    double band_m) {
-  if (depth_m.size() != labels.size()) return 0.0;
-  std::vector<float> z;
-  box &= cv::Rect(0, 0, labels.cols, labels.rows);
-  for (int y = box.y; y < box.br().y; y += 4)
-    for (int x = box.x; x < box.br().x; x += 4)
-      if (labels.at<uint16_t>(y, x) == label && depth_m.at<float>(y, x) > 0.f)
-        z.push_back(depth_m.at<float>(y, x));
-  return z.empty() ? 0.0 : double(medianInPlace(z)) - band_m;
-}
-
 bool carryByCroppedFlow(const CroppedFlow& flow, cv::Size image_size, cv::Point2f& pixel) {
   if (flow.flow_half.empty()) return false;
   // Half-size pixel centres: (u + 0.5) / 2 - 0.5.

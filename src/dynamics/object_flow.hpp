@@ -56,12 +56,6 @@ cv::Mat objectCrop(const ObjectView& view, cv::Rect crop_half, uint8_t fill);
 cv::Point medianShiftHalf(const cv::Mat& flow_half, cv::Size image_size,
                           const std::vector<cv::Point2f>& pixels);
 
-/// The depth nearer than which a surface hides the object `label` (its mask inside `box`, every
-/// 4th pixel and row with depth): their median depth less `band_m` (besideNearerSurface's test);
-/// 0 (none) without depth.
-double hidingDepthM(const cv::Mat& depth_m, const cv::Mat& labels, uint16_t label, cv::Rect box,
-                    double band_m);
-
 /// Where `pixel` (full size) of the previous frame is in this one, by `flow` (as carryByFlow
 /// does with the whole half-size field); false when it lies outside the crop or the image.
 bool carryByCroppedFlow(const CroppedFlow& flow, cv::Size image_size, cv::Point2f& pixel);

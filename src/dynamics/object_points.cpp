@@ -126,6 +126,21 @@ int instanceCutSide(const Instance& instance, int image_cols) {
   return left == right ? 0 : (left ? -1 : 1);
 }
 
+double medianLabelDepthM(const cv::Mat& labels, uint16_t label, cv::Rect box,
+                         const cv::Mat& depth_m, int step) {
+  if (depth_m.size() != labels.size()) return 0.0;
+  std::vector<float> z;
+  box &= cv::Rect(0, 0, labels.cols, labels.rows);
+  for (int y = box.y; y < box.y + box.height; y += step)
+    for (int x = box.x; x < box.x + box.width; x += step)
+      if (labels.at<uint16_t>(y, x) == label) {
+        const float d = depth_m.at<float>(y, x);
+        if (std::isfinite(d) && d > 0.f) z.push_back(d);
+      }
+  if (z.empty()) return 0.0;
+  return medianInPlace(z);
+}
+
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel) {
   if (!flow_half.empty()) {
     // Half-size pixel centres: (u + 0.5) / 2 - 0.5.

@@ -58,6 +58,11 @@ int instanceCutSide(const Instance& instance, int image_cols);
 /// depth: a mask that spills over its outline sees the background behind, not the object.
 std::vector<uint8_t> withinDepthBand(const std::vector<float>& z_m, double band_m);
 
+/// Median depth (m) of the pixels labelled `label` inside `box`, every `step`-th pixel and row,
+/// those with depth only; 0 when none (or without depth of the labels' size).
+double medianLabelDepthM(const cv::Mat& labels, uint16_t label, cv::Rect box,
+                         const cv::Mat& depth_m, int step);
+
 /// Where `pixel` (full size) of the previous frame is in this one, by the half-size flow field;
 /// false when it leaves the image.
 bool carryByFlow(const cv::Mat& flow_half, cv::Size image_size, cv::Point2f& pixel);

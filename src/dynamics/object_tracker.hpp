@@ -205,7 +205,7 @@ class ObjectTracker {
   std::vector<OutOfView> out_of_view_;
   cv::Mat previous_labels_;
   cv::Mat previous_grey_half_;           // the last frame's (ObjectTrackerInput::grey_half)
-  cv::Mat previous_depth_m_;             // the last frame's depth (own_flow only)
+  cv::Mat previous_depth_m_;             // the last frame's depth (own flows; previous_ shares it)
   cv::Ptr<cv::DISOpticalFlow> own_dis_;  // each object's own flow (object_flow.hpp)
   PreviousDepthFrame previous_;  // a new track's first motion (first_motion.hpp); none: untracked
   /// This frame's floor seen from the camera (floor_plane.hpp: this frame's fit averaged over

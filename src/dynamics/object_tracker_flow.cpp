@@ -53,10 +53,15 @@ CroppedFlow ObjectTracker::ownFlow(const Track& track, const Instance& instance,
   // hides it (besideNearerSurface's test).
   const cv::Rect was = cv::boundingRect(track.pixels);
   const int margin_px = sharedFlowFootprintPx(config_.flow_finest_scale) / 2;
+  const auto hidingDepthM = [&](const cv::Mat& labels, uint16_t label, cv::Rect box,
+                                const cv::Mat& depth_m) {
+    const double z_m = medianLabelDepthM(labels, label, box, depth_m, 4);
+    return z_m > 0.0 ? z_m - config_.depth_band_m : 0.0;
+  };
   const double was_nearer_than_m =
-      hidingDepthM(previous_depth_m_, previous_labels_, track.instance, was, config_.depth_band_m);
-  const double now_nearer_than_m = hidingDepthM(input.depth_m, input.instances.labels, instance.id,
-                                                instance.box, config_.depth_band_m);
+      hidingDepthM(previous_labels_, track.instance, was, previous_depth_m_);
+  const double now_nearer_than_m =
+      hidingDepthM(input.instances.labels, instance.id, instance.box, input.depth_m);
   return objectFlow(
       {previous_grey_half_, previous_labels_, track.instance, previous_depth_m_, was_nearer_than_m},
       {input.grey_half, input.instances.labels, instance.id, input.depth_m, now_nearer_than_m},

@@ -28,20 +28,6 @@ double behindSurface(const std::string& class_name, const std::vector<Vec3>& p_c
   return class_name == "person" ? config.centre_behind_surface_m : 0.5 * objectWidth(p_camera);
 }
 
-double medianMaskDepth(const Instance& instance, const cv::Mat& labels, const cv::Mat& depth_m,
-                       int step) {
-  std::vector<float> z;
-  const cv::Rect box = instance.box & cv::Rect(0, 0, labels.cols, labels.rows);
-  for (int y = box.y; y < box.y + box.height; y += step)
-    for (int x = box.x; x < box.x + box.width; x += step)
-      if (labels.at<uint16_t>(y, x) == instance.id) {
-        const float d = depth_m.at<float>(y, x);
-        if (std::isfinite(d) && d > 0.f) z.push_back(d);
-      }
-  if (z.empty()) return 0.0;
-  return medianInPlace(z);
-}
-
 }  // namespace
 
 std::optional<double> ObjectTracker::headingAbsCos(const Track& track, const Vec3& p_camera,
@@ -83,8 +69,8 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
       // Depth of the mask, or of what borders it, nearer than the range allows (2 sigma): not a
       // whole person (an arm beside a cabinet in the simulated crossing read 10 m at 3.9 m).
       const double nearest_z_m = range ? range->p_camera.z() - 2.0 * range->sigma_range_m : 0.0;
-      const double z_mask_m =
-          medianMaskDepth(*instance, input.instances.labels, input.depth_m, sample_step_px_);
+      const double z_mask_m = medianLabelDepthM(input.instances.labels, instance->id, instance->box,
+                                                input.depth_m, sample_step_px_);
       if (range && !(z_mask_m > 0.0 && z_mask_m < nearest_z_m) &&
           nearerOutlineShare(input.instances.labels, input.depth_m, instance->id, instance->box,
                              nearest_z_m) < kMaxNearerOutlineShare)
@@ -129,8 +115,8 @@ ObjectSample ObjectTracker::samplePixels(const Instance& instance,
                                          const ObjectTrackerInput& input) const {
   SampleOptions options{sample_step_px_, config_.max_points, config_.trunk_min_points};
   if (instance.class_name == "person")
-    if (const double z =
-            medianMaskDepth(instance, input.instances.labels, input.depth_m, 2 * sample_step_px_);
+    if (const double z = medianLabelDepthM(input.instances.labels, instance.id, instance.box,
+                                           input.depth_m, 2 * sample_step_px_);
         z > 0.0)
       options.person_height_px = kPersonHeightM * input.camera.fy / z;
   return sampleObjectPixels(input.instances.labels, instance, options);

@@ -165,7 +165,7 @@ TEST(ObjectTracker, ABoxIsCarriedByItsOwnFlowWhereTheSharedFlowAveragesInTheBack
   EXPECT_LT(speedAfterSixFrames(false), 0.8 * truth_mps);  // the background's motion averaged in
 }
 
-TEST(ObjectFlow, TheShiftIsTheMedianFlowAndTheHidingDepthTheMedianLessTheBand) {
+TEST(ObjectFlow, TheShiftIsTheMedianFlowAndTheObjectsDepthTheMedianOfItsMask) {
   // Half-size flow: 3 px right everywhere but a 5 px jump at one of the three pixels.
   cv::Mat flow(kH / 2, kW / 2, CV_32FC2, cv::Scalar(3.f, -1.f));
   flow.at<cv::Point2f>(50, 50) = {5.f, 0.f};
@@ -173,6 +173,6 @@ TEST(ObjectFlow, TheShiftIsTheMedianFlowAndTheHidingDepthTheMedianLessTheBand) {
   EXPECT_EQ(medianShiftHalf(flow, cv::Size(kW, kH), pixels), cv::Point(3, -1));
   EXPECT_EQ(medianShiftHalf(cv::Mat(), cv::Size(kW, kH), pixels), cv::Point(0, 0));
   const Frame f = frame(0, 300);  // the object at 4.00-4.05 m in front of a 6 m wall
-  EXPECT_NEAR(hidingDepthM(f.depth_m, f.labels, 1, cv::Rect(280, 120, 80, 240), 0.5), 3.5, 0.05);
-  EXPECT_EQ(hidingDepthM(f.depth_m, f.labels, 2, cv::Rect(280, 120, 80, 240), 0.5), 0.0);
+  EXPECT_NEAR(medianLabelDepthM(f.labels, 1, cv::Rect(280, 120, 80, 240), f.depth_m, 4), 4.0, 0.05);
+  EXPECT_EQ(medianLabelDepthM(f.labels, 2, cv::Rect(280, 120, 80, 240), f.depth_m, 4), 0.0);
 }
