@@ -6,6 +6,7 @@
 #include <iterator>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -17,6 +18,39 @@ namespace {
 bool startsWith(const std::vector<unsigned char>& bytes,
                 std::initializer_list<unsigned char> head) {
   return bytes.size() >= head.size() && std::equal(head.begin(), head.end(), bytes.begin());
+}
+
+/// The JPEG's frame header (SOFn) read by walking its marker segments: "" when it declares a
+/// size up to kMaxSidePx a side, else what is wrong. libjpeg allocates by the declared size
+/// before it reads any pixel: a 173-byte file asking for 65535 x 65535 made it request 4 GB
+/// (found by fuzz_mask_png).
+std::string jpegHeaderProblem(const std::vector<unsigned char>& bytes) {
+  constexpr int kMaxSidePx = 16384;
+  size_t pos = 2;  // after FF D8
+  while (pos + 4 <= bytes.size()) {
+    if (bytes[pos] != 0xFF) return "malformed JPEG (no marker where one should be)";
+    const unsigned char marker = bytes[pos + 1];
+    if (marker == 0xFF) {  // fill byte
+      ++pos;
+      continue;
+    }
+    const size_t length = (size_t(bytes[pos + 2]) << 8) | bytes[pos + 3];
+    const bool sof =
+        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (sof) {
+      if (pos + 9 > bytes.size()) return "truncated JPEG frame header";
+      const int height = (int(bytes[pos + 5]) << 8) | bytes[pos + 6];
+      const int width = (int(bytes[pos + 7]) << 8) | bytes[pos + 8];
+      if (width <= 0 || height <= 0 || width > kMaxSidePx || height > kMaxSidePx)
+        return "JPEG declares " + std::to_string(width) + "x" + std::to_string(height) +
+               " pixels (at most " + std::to_string(kMaxSidePx) + " a side)";
+      return {};
+    }
+    if (marker == 0xDA || marker == 0xD9 || length < 2)
+      return "malformed JPEG (no frame header before the image data)";
+    pos += 2 + length;
+  }
+  return "truncated JPEG (no frame header)";
 }
 
 }  // namespace
@@ -34,7 +68,7 @@ std::string imageBytesProblem(const std::vector<unsigned char>& bytes) {
     // the end is the end-of-image marker; some cameras pad a few bytes after it.
     const size_t from = bytes.size() > 256 ? bytes.size() - 256 : 2;
     for (size_t k = bytes.size() - 1; k > from; --k)
-      if (bytes[k - 1] == 0xFF && bytes[k] == 0xD9) return {};
+      if (bytes[k - 1] == 0xFF && bytes[k] == 0xD9) return jpegHeaderProblem(bytes);
     return "truncated JPEG (no end-of-image marker)";
   }
   // OpenCV would pick any of its decoders by content (TIFF, JPEG 2000, DICOM through GDCM, ...);

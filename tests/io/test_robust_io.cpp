@@ -60,6 +60,16 @@ TEST(RobustIo, JsonFileIsReplacedOnlyWhenComplete) {
   EXPECT_EQ(readJsonFile(dir / "stats.json")["run"], 1);
 }
 
+TEST(RobustIo, AJpegDeclaringAHugeFrameIsRefusedBeforeDecoding) {
+  // fuzz_mask_png's finding: 173 bytes that made libjpeg ask for 4 GB.
+  std::vector<unsigned char> jpg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08, 0xFF,
+                                    0xFF, 0xFF, 0xFF, 0x01, 0x01, 0x11, 0x00};
+  jpg.insert(jpg.end(), {0xFF, 0xD9});
+  EXPECT_NE(imageBytesProblem(jpg).find("65535x65535"), std::string::npos);
+  const std::vector<unsigned char> no_markers = {0xFF, 0xD8, 'N', 'G', 0x0D, 0x0A, 0xFF, 0xD9};
+  EXPECT_NE(imageBytesProblem(no_markers).find("malformed JPEG"), std::string::npos);
+}
+
 TEST(RobustIo, TruncatedAndEmptyImagesAreRefused) {
   const auto png = encode(".png", texture());
   const auto jpg = encode(".jpg", texture());
