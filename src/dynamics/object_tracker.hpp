@@ -78,6 +78,11 @@ class ObjectTracker {
     int still = 0;            // frames in a row not found moving
     bool stationary = false;  // reported with zero velocity
     int points_moving = 0;    // frames in a row whose points' rigid motion was not slow
+    int points_slow = 0;      // frames in a row whose points' rigid motion was slow
+    // How far the points' rigid motion has read the filtered speed (within a factor of 1.5) in
+    // the frames before any slow ones, counted up and down: whether the points are to be
+    // believed when they read a stop.
+    int points_agree = 0;
     int inliers = 0;
     int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
     // > 0: every centre the filter has heard came from the height range (height_range.hpp), so

@@ -640,3 +640,40 @@ TEST(ObjectTracker, ANewTrackCutByTheImageSideReadsOnlyItsVelocityAcrossTheRayAt
     }
   }
 }
+
+TEST(ObjectTracker, APersonWhosePointsStopIsHeldStillWhileTheVerdictLags) {
+  // A person walks for a second and stops; the dynamics stage (scene flow over a gap of frames)
+  // still finds it moving afterwards. Two frames of points that read slow hold it still; without
+  // that rule (stop_after_slow_frames 0) its filtered speed is still far from zero then.
+  for (const int stop_after : {2, 0}) {
+    ObjectTrackingConfig config;
+    config.stop_after_slow_frames = stop_after;
+    ObjectTracker tracker(config, 5);
+    constexpr float kScale = 2.5f;
+    constexpr int kStopFrame = 30;  // the last frame it moved into; it stands from the next
+    float x = 100.f;
+    std::vector<TrackedObject> out;
+    for (int i = 0; i < 40; ++i) {
+      SynthFrame f = frame({x}, {true}, i > 0);
+      f.instances.items[0].class_name = "person";
+      if (i > 0) f.flow_half *= i <= kStopFrame ? kScale : 0.f;
+      out = step(tracker, f, i);  // found moving in every frame
+      ASSERT_EQ(out.size(), 1u) << "frame " << i;
+      if (i == kStopFrame) {
+        EXPECT_TRUE(out[0].dynamic);
+        EXPECT_GT(out[0].speed_mps, 0.5 * kScale * kSlideSpeedMps);
+      }
+      if (i == kStopFrame + 2 && stop_after == 2) {
+        EXPECT_FALSE(out[0].dynamic);
+        EXPECT_EQ(out[0].speed_mps, 0.0);
+      }
+      if (i == kStopFrame + 2 && stop_after == 0) {
+        EXPECT_GT(out[0].speed_mps, 0.25) << "the rule is what holds it";
+      }
+      if (i >= kStopFrame + 2 && stop_after == 2) {
+        EXPECT_FALSE(out[0].dynamic) << "frame " << i;
+      }
+      if (i < kStopFrame) x += kScale * kPixelsPerFrame;
+    }
+  }
+}

@@ -41,6 +41,7 @@ struct ObjectTrackingConfig {
   int motion_velocity_frames = 10;
   double velocity_known_sigma_mps = 0.3;
   int static_after_frames = 3;
+  int stop_after_slow_frames = 2;
   double static_speed_mps = 0.25;
   double path_horizon_s = 3.0;
   double path_step_s = 0.5;
@@ -178,6 +179,11 @@ struct ObjectTrackingConfig {
       "static_speed_mps (or not found moving for 3x as many frames) is static: velocity zero",
       Range{0, 1000});
     v("static_speed_mps", static_speed_mps, "see static_after_frames (m/s)", Range{0, 100});
+    v("stop_after_slow_frames", stop_after_slow_frames,
+      "a person (a prior-dynamic class) whose points' rigid motion reads slower than "
+      "static_speed_mps for this many frames in a row is held still at once, whatever the "
+      "dynamics stage's verdict, which lags a stop by its scene-flow gap (0: never)",
+      Range{0, 1000});
     v("path_horizon_s", path_horizon_s, "predicted path: how far ahead (s)", Range{0, 60});
     v("path_step_s", path_step_s, "predicted path: spacing of its points (s)",
       Range{0, 60, Range::kOpenLow});
