@@ -459,10 +459,15 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // of the tracking table's eight sequences, none two in a row). And only where the points read
   // the walker's speed before they read it stop: points whose flow under-reads the object (smooth
   // clothes, a part the flow drags with the background) read slow all along while its centre moves.
+  // And only from a walk clearly faster than "slow" (twice static_speed_mps): a dawdler's points
+  // read slow now and then without a stop (Bonn crowd: a walker filtered at 0.33 m/s, its centre
+  // moving on at that pace, was held still for 8 frames). Once held, slow points keep it held.
   const bool points_slow = v_measured && isSlow(*v_measured);
-  const bool stops = track.prior_dynamic && config_.stop_after_slow_frames > 0 && points_slow &&
-                     track.points_slow + 1 >= config_.stop_after_slow_frames &&
-                     track.points_agree >= config_.static_after_frames;
+  const bool stops =
+      track.prior_dynamic && config_.stop_after_slow_frames > 0 && points_slow &&
+      track.points_slow + 1 >= config_.stop_after_slow_frames &&
+      track.points_agree >= config_.static_after_frames &&
+      (track.stationary || track.filter.velocity().norm() >= 2.0 * config_.static_speed_mps);
   track.points_slow = points_slow ? track.points_slow + 1 : 0;
   if (!points_slow) {
     const double filtered_mps = track.filter.velocity().norm();
