@@ -182,7 +182,9 @@ struct ObjectTrackingConfig {
     v("stop_after_slow_frames", stop_after_slow_frames,
       "a person (a prior-dynamic class) whose points' rigid motion reads slower than "
       "static_speed_mps for this many frames in a row is held still at once, whatever the "
-      "dynamics stage's verdict, which lags a stop by its scene-flow gap (0: never)",
+      "dynamics stage's verdict, which lags a stop by its scene-flow gap, if those points had "
+      "been reading its filtered speed and that speed was at least twice static_speed_mps "
+      "(0: never)",
       Range{0, 1000});
     v("path_horizon_s", path_horizon_s, "predicted path: how far ahead (s)", Range{0, 60});
     v("path_step_s", path_step_s, "predicted path: spacing of its points (s)",
