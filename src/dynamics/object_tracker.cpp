@@ -463,14 +463,13 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // read slow now and then without a stop (Bonn crowd: a walker filtered at 0.33 m/s, its centre
   // moving on at that pace, was held still for 8 frames). Once held, slow points keep it held.
   const bool points_slow = v_measured && isSlow(*v_measured);
-  const bool stops =
-      track.prior_dynamic && config_.stop_after_slow_frames > 0 && points_slow &&
-      track.points_slow + 1 >= config_.stop_after_slow_frames &&
-      track.points_agree >= config_.static_after_frames &&
-      (track.stationary || track.filter.velocity().norm() >= 2.0 * config_.static_speed_mps);
+  const double filtered_mps = track.filter.velocity().norm();
+  const bool stops = track.prior_dynamic && config_.stop_after_slow_frames > 0 && points_slow &&
+                     track.points_slow + 1 >= config_.stop_after_slow_frames &&
+                     track.points_agree >= config_.static_after_frames &&
+                     (track.stationary || filtered_mps >= 2.0 * config_.static_speed_mps);
   track.points_slow = points_slow ? track.points_slow + 1 : 0;
   if (!points_slow) {
-    const double filtered_mps = track.filter.velocity().norm();
     const bool agrees = v_measured && !track.stationary &&
                         v_measured->norm() < 1.5 * filtered_mps &&
                         filtered_mps < 1.5 * v_measured->norm();

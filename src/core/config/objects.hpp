@@ -110,10 +110,9 @@ struct ObjectTrackingConfig {
       Range{0, 100});
     v("own_flow", own_flow,
       "each moving object seen in both frames (a person: its trunk) is carried by its own flow: "
-      "DIS on "
-      "a crop around it with every pixel off its mask and not nearer than it set to one flat "
-      "grey, so the patches do not average its motion with the background's (the shared flow "
-      "under-read a side-on walker by about a quarter, docs/tracking.md 'Session 33')");
+      "DIS on a crop around it with every pixel off its mask and not nearer than it set to one "
+      "flat grey, so the patches do not average its motion with the background's (the shared "
+      "flow under-read a side-on walker by about a quarter, docs/tracking.md 'Session 33')");
     v("own_flow_fill_offset", own_flow_fill_offset,
       "grey levels between the object's mean brightness and the flat grey set off its mask "
       "(its outline's contrast in the own flow)",
