@@ -256,20 +256,34 @@ std::unique_ptr<Scene> crossingNear(Stage& st) {
   return crossingAt(st, script::kNearCrossingAheadM);
 }
 
-std::unique_ptr<Scene> office(Stage& st) {
+/// `ramp_s`: how long each walker takes to reach its walking speed and to come to a halt (0: the
+/// speed switches within a frame, as `office` has always been scripted).
+std::unique_ptr<Scene> officeWith(Stage& st, double ramp_s) {
   furnishOffice(st);
   // The wearer first faces the desks behind the west partition (within depth range, for the
   // SLAM to start on), then turns up the aisle.
   st.wearer({{4.2, 0.6}, {2.6, 1.6}, {3.2, 3.8}, {4.4, 6.2}}, 0.7, 1.6);
   st.person(1, Motion({6.3, 5.8}, kWest)
                    .wait(1.0)
-                   .walk(SmoothPath({{6.3, 5.8}, {2.0, 5.8}, {2.0, 4.9}}, 0.6), 1.2));
-  st.person(2, Motion({2.2, 6.8}, kSouth).wait(0.5).walk(line({2.2, 6.8}, {2.4, 2.2}), 1.0));
-  st.person(
-      3,
-      Motion({6.0, 2.9}, kNorth).walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7));
+                   .walk(SmoothPath({{6.3, 5.8}, {2.0, 5.8}, {2.0, 4.9}}, 0.6), 1.2, ramp_s));
+  st.person(2,
+            Motion({2.2, 6.8}, kSouth).wait(0.5).walk(line({2.2, 6.8}, {2.4, 2.2}), 1.0, ramp_s));
+  st.person(3, Motion({6.0, 2.9}, kNorth)
+                   .walk(SmoothPath({{6.0, 2.9}, {6.0, 6.7}, {5.2, 6.9}}, 0.8), 0.7, ramp_s));
   st.scene->duration_s = 10.0;
   return std::move(st.scene);
+}
+
+std::unique_ptr<Scene> office(Stage& st) {
+  return officeWith(st, 0.0);
+}
+
+/// People start and stop walking over about a step: a planned stop takes one to two steps
+/// (0.5-1 s) and gait initiation about as long, so 0.6 s stands for both. The walking pose's
+/// stride shrinks with the speed (Scene::drawItems), so the body comes to a standing pose smoothly
+/// rather than jumping to it from mid-stride.
+std::unique_ptr<Scene> officeRamped(Stage& st) {
+  return officeWith(st, script::kOfficeRampS);
 }
 
 std::unique_ptr<Scene> pushedBox(Stage& st) {
@@ -377,6 +391,9 @@ const std::vector<std::pair<ScenarioInfo, Factory>>& registry() {
       {{"walking-away", "a person 1.8 m ahead walks away from the wearer at 1.3 m/s"}, walkingAway},
       {{"office", "three people walk about an office while the wearer walks (demo default)"},
        office},
+      {{"office-ramped",
+        "office, but each walker speeds up and slows down over 0.6 s instead of within a frame"},
+       officeRamped},
       {{"pushed-box", "a person pushes a box 1 m and walks away (a non-prior mover)"}, pushedBox},
       {{"loop", "the wearer walks a ~21 m loop through two rooms and back to the start"}, loop},
       {{"standing", "three people stand and talk; after 3 s one walks off"}, standing},

@@ -38,6 +38,7 @@ constexpr double kParallelOffsetM = 3.0;     ///< parallel: lateral distance of 
 constexpr double kAwaySpeedMps = 1.3;        ///< walking-away: the walker's speed
 constexpr double kHeadTurnPeakYawDegPs = 150.0;  ///< head-turns: peak yaw rate of the turns
 constexpr double kHeadNodPeakDegPs = 100.0;      ///< head-turns: peak pitch rate of the nods
+constexpr double kOfficeRampS = 0.6;  ///< office-ramped: each walker's speed-up and slow-down
 }  // namespace script
 
 /// The head movements of `head-turns` and `head-turns-walkers` (issue 18): yaw turns of 60 and

@@ -195,6 +195,36 @@ TEST(SimScenarios, LoopIsLongAndReturnsToTheStart) {
   EXPECT_LT(heading_diff, 0.01);
 }
 
+/// The largest change of any walker's speed (not direction) between two frames 1/30 s apart, in
+/// m/s^2.
+double peakWalkerAccelMps2(const std::string& scenario) {
+  Simulator sim(quick(scenario));
+  const Scene& scene = sim.scene();
+  const double dt = 1.0 / 30.0;
+  double peak = 0.0;
+  for (const Mover& m : scene.movers)
+    for (double t = dt; t < scene.duration_s; t += dt)
+      peak = std::max(
+          peak,
+          std::abs(scene.moverVelocity(m, t).norm() - scene.moverVelocity(m, t - dt).norm()) / dt);
+  return peak;
+}
+
+TEST(SimScenarios, OfficeRampedWalkersStartAndStopOverTheRamp) {
+  // office-ramped's fastest walker (1.2 m/s) changes speed by 1.2 / 0.6 = 2 m/s^2 at most.
+  EXPECT_LT(peakWalkerAccelMps2("office-ramped"), 1.2 / script::kOfficeRampS + 1e-6);
+  // office switches speed within a frame: 1.2 m/s in 1/30 s.
+  EXPECT_GT(peakWalkerAccelMps2("office"), 30.0);
+  // The same walks otherwise: each walker ends where it ends in office.
+  Simulator snap(quick("office")), ramped(quick("office-ramped"));
+  ASSERT_EQ(snap.scene().movers.size(), ramped.scene().movers.size());
+  for (size_t i = 0; i < snap.scene().movers.size(); ++i) {
+    const Vec3 a = snap.scene().moverCentre(snap.scene().movers[i], 9.9);
+    const Vec3 b = ramped.scene().moverCentre(ramped.scene().movers[i], 9.9);
+    EXPECT_LT((a - b).norm(), 1e-9) << "walker " << i;
+  }
+}
+
 TEST(SimCamera, FirstPoseIsIdentityAndMotionIsTrackable) {
   for (const auto& info : scenarioList()) {
     Simulator sim(quick(info.name));
