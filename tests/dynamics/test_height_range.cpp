@@ -277,6 +277,26 @@ TEST(ObjectTracker, APersonBeyondTheDepthRangeCutByTheImageGetsNoRange) {
   EXPECT_TRUE(out.empty());
 }
 
+TEST(ObjectTracker, ASilhouetteAFewPixelsTallGetsNoRange) {
+  // 4 rows of a person's mask, no depth: a 1.70 m person would stand 220 m away, known to
+  // +-53 % by those rows' ends. No track starts; 12 rows (74 m, +-18 %) are ranged.
+  const PinholeCamera c = camera();
+  FrameDynamics dynamics;
+  dynamics.moving_ids.push_back(1);
+  const cv::Mat no_flow, depth = cv::Mat(kH, kW, CV_32F, cv::Scalar(0.f));
+  for (const int rows : {4, 12}) {
+    ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+    const auto out = tracker.track({0, 0.0, personMask(300, 3, 200, 200 + rows - 1), dynamics,
+                                    no_flow, depth, SE3::Identity(), true, c});
+    if (rows == 4) {
+      EXPECT_TRUE(out.empty()) << out[0].p_camera.transpose();
+    } else {
+      ASSERT_EQ(out.size(), 1u);
+      EXPECT_NEAR(out[0].p_camera.z(), 1.70 * c.fy / rows, 10.0);
+    }
+  }
+}
+
 TEST(ObjectTracker, ASilhouetteBorderedByANearerObjectGetsNoRange) {
   // An 85 px tall sliver of a walker without depth (a 1.70 m person would be 10 m away),
   // bordered on its left by a cabinet 3 m away: part of a nearer person hidden by the cabinet,

@@ -117,8 +117,9 @@ TEST(SimulateCli, SameSeedSameBytes) {
 TEST(SimulateCli, ListsScenarios) {
   std::string out;
   ASSERT_EQ(runCli("simulate --list", &out), 0);
-  for (const char* name : {"static-room", "approach", "crossing", "crossing-near", "parallel",
-                           "walking-away", "office", "pushed-box", "loop", "standing"})
+  for (const char* name :
+       {"static-room", "approach", "crossing", "crossing-near", "parallel", "walking-away",
+        "office", "office-ramped", "pushed-box", "loop", "standing"})
     EXPECT_NE(out.find(name), std::string::npos) << name;
   ASSERT_EQ(runCli("simulate --help", &out), 0);
   EXPECT_NE(out.find("pushed-box"), std::string::npos) << "the help names the scenarios";
