@@ -429,7 +429,9 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // Only prior-dynamic classes (people, animals) set off by themselves: a chair's or a box's rigid
   // motion is mostly its mask's jitter (for every class, Bonn crowd's chairs were reported moving
   // in more frames), and one that is pushed is found moving by the dynamics stage.
-  track.points_moving = v_measured && !isSlow(*v_measured) ? track.points_moving + 1 : 0;
+  // A frame whose points give no motion (no depth, too few inliers) says nothing either way: the
+  // count waits for the next one.
+  if (v_measured) track.points_moving = isSlow(*v_measured) ? 0 : track.points_moving + 1;
   const bool sets_off = track.prior_dynamic && track.points_moving >= config_.static_after_frames;
   // An object that does not move by itself is static once the dynamics stage has not found it
   // moving for a while, unless its own velocity is clearly fast: its points' jitter says little

@@ -342,6 +342,34 @@ TEST(ObjectTracker, AHeldStillPersonWhosePointsKeepMovingSetsOff) {
   }
 }
 
+TEST(ObjectTracker, AFrameWithoutMotionDoesNotRestartASettingOffCount) {
+  // As above, a person held still walks off with no verdict; in the third frame of its walk the
+  // depth is missing, so neither that frame nor the next (no 3D points of the frame before) gives
+  // a motion. Such frames say nothing either way: the count of moving frames goes on, and the
+  // person is released on the third frame of measured motion, two frames after the gap
+  // (simulated office-ramped seed 3: a walker coming into view at the side was held still for
+  // three frames after one frame without a motion restarted the count).
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  constexpr float kScale = 2.5f;
+  constexpr int kStart = 20, kNoDepthFrame = kStart + 3;
+  float x = 100.f;
+  std::vector<TrackedObject> out;
+  for (int i = 0; i <= kNoDepthFrame + 2; ++i) {
+    const bool moving = i > kStart;
+    SynthFrame f = frame({x}, {true}, i > 0);
+    f.instances.items[0].class_name = "person";
+    if (i > 0) f.flow_half *= moving ? kScale : 0.f;
+    if (i == kNoDepthFrame) f.depth_m.setTo(0.f);
+    out = step(tracker, f, i, FrameDynamics{});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i == kStart) {
+      EXPECT_FALSE(out[0].dynamic) << "held still while it stood";
+    }
+    if (moving) x += kScale * kPixelsPerFrame;
+  }
+  EXPECT_TRUE(out[0].dynamic) << "released after three frames of moving points";
+}
+
 TEST(ObjectTracker, AStaticVerdictDoesNotHoldAPersonWhosePointsClearlyGoOn) {
   // From frame 10 the dynamics stage calls a person "verified static". Walking on (the verdict
   // read the background inside a grown mask), the track's own points have moved clearly for more
