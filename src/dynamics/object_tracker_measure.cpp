@@ -23,9 +23,9 @@ constexpr double kMaxNearerOutlineShare = 0.05;
 
 /// A height range known to worse than this share of itself (one sigma) is no position: the
 /// stature alone leaves 5 %; the pixel height's ends add 2.1 px / height (height_range.hpp), so
-/// this keeps silhouettes taller than about 9 px. A shorter one is a sliver (a head over a
-/// partition beyond the depth range, a few rows of a mask) that would place a person hundreds
-/// of metres away: the simulated office's entering walkers did, at 252-1010 m.
+/// this keeps silhouettes taller than about 9 px. A shorter one is a sliver (a few rows of a
+/// walker at the image's side) that would place a person hundreds of metres away: in the
+/// simulated office such slivers stood 252-1010 m away.
 constexpr double kMaxRangeRelativeSigma = 0.25;
 
 /// How far the centre lies behind the visible surface: a person's half thickness (config); for
