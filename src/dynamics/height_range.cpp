@@ -134,6 +134,7 @@ std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const Pin
   const double pixels_rel = std::sqrt(2.0) * options.edge_sigma_px / height_px;
   out.scale_sigma = stature_rel;
   out.sigma_range_m = out.range_m * std::hypot(stature_rel, pixels_rel);
+  if (!(out.sigma_range_m <= options.max_relative_sigma * out.range_m)) return std::nullopt;
   out.cov_frame_camera = frameCovariance(out.p_camera, out.range_m * pixels_rel,
                                          options.across_sigma_m, options.edge_sigma_px, camera);
   return out;

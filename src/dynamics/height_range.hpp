@@ -69,6 +69,12 @@ struct HeightRangeOptions {
   /// Standard deviation (m) across the viewing ray: the mask's median column and the torso
   /// fraction vs. the true torso centre (arms, posture).
   double across_sigma_m = 0.05;
+  /// A range known to worse than this share of itself (one sigma) is no range: the stature
+  /// alone leaves 5 %, the mask's ends add 2.1 px / height px, so this keeps silhouettes taller
+  /// than about 9 px. A shorter one is a sliver (a few rows of a walker at the image's side)
+  /// that would place a person hundreds of metres away: in the simulated office such slivers
+  /// stood 252-1010 m away (docs/tracking.md "Session 35").
+  double max_relative_sigma = 0.25;
 };
 
 struct HeightRange {
@@ -95,7 +101,7 @@ struct HeightRange {
 /// that of the pixel height (σ_edge·√2 / height_px, new in each frame); both lie along the
 /// viewing ray. Across the ray:
 /// across_sigma_m and a pixel's worth of the column. None when the geometry is degenerate (the
-/// solution lies behind the camera).
+/// solution lies behind the camera) or the range is known to worse than max_relative_sigma.
 std::optional<HeightRange> rangeFromHeight(const PersonExtent& extent, const PinholeCamera& camera,
                                            const Vec3& up_camera,
                                            const HeightRangeOptions& options = {});

@@ -21,13 +21,6 @@ constexpr double kPersonHeightM = 1.7;
 /// nothing nearer; one hidden along a side or below, tens of percent.
 constexpr double kMaxNearerOutlineShare = 0.05;
 
-/// A height range known to worse than this share of itself (one sigma) is no position: the
-/// stature alone leaves 5 %; the pixel height's ends add 2.1 px / height (height_range.hpp), so
-/// this keeps silhouettes taller than about 9 px. A shorter one is a sliver (a few rows of a
-/// walker at the image's side) that would place a person hundreds of metres away: in the
-/// simulated office such slivers stood 252-1010 m away.
-constexpr double kMaxRangeRelativeSigma = 0.25;
-
 /// How far the centre lies behind the visible surface: a person's half thickness (config); for
 /// other objects half their visible width (a box or chair is about as deep as it is wide).
 double behindSurface(const std::string& class_name, const std::vector<Vec3>& p_camera,
@@ -62,8 +55,6 @@ std::optional<ObjectTracker::Centre> ObjectTracker::measureCentre(
     if (const auto extent = personExtent(input.instances.labels, *instance)) {
       const Mat3 R_world_camera = input.T_world_camera.linear();
       auto range = rangeFromHeight(*extent, input.camera, worldUpInCamera(input.T_world_camera));
-      if (range && !(range->sigma_range_m <= kMaxRangeRelativeSigma * range->range_m))
-        range.reset();
       if (range && config_.floor_contact_range && floor_) {
         // Where the soles meet the floor, no stature assumed: kept when the stature's range
         // agrees within its 3 sigma (else the mask's lowest row is not the soles: legs lost

@@ -118,6 +118,19 @@ TEST(HeightRange, PitchedCameraUsesTheWorldsUp) {
   EXPECT_GT((level->p_camera - torso_c).norm(), 0.02);
 }
 
+TEST(HeightRange, ASilhouetteTooShortToRangeIsNoRange) {
+  // 4 px tall: +-53 % (the mask's ends); 12 px: +-18 %, within the 25 % bound.
+  const PinholeCamera c = camera();
+  const Vec3 up(0.0, -1.0, 0.0);
+  EXPECT_FALSE(rangeFromHeight({200.0, 204.0, 320.0}, c, up).has_value());
+  const auto range = rangeFromHeight({200.0, 212.0, 320.0}, c, up);
+  ASSERT_TRUE(range.has_value());
+  EXPECT_NEAR(range->sigma_range_m / range->range_m, 0.185, 0.01);
+  HeightRangeOptions loose;
+  loose.max_relative_sigma = 1.0;
+  EXPECT_TRUE(rangeFromHeight({200.0, 204.0, 320.0}, c, up, loose).has_value());
+}
+
 TEST(HeightRange, ExtentOnlyWhenHeadAndFeetAreInViewAndUnoccluded) {
   // Whole in view: the mask's edges (pixel edges, not centres) and the torso band's column.
   Instances whole = personMask(300, 20, 100, 211);

@@ -49,6 +49,15 @@ SynthFrame frame(const std::vector<float>& x0, const std::vector<bool>& present,
   return f;
 }
 
+/// One person at x0 (as frame() draws it, found by the segmenter) whose flow, when it has one,
+/// carries it `flow_scale` times kPixelsPerFrame (0: it stands).
+SynthFrame personFrame(float x0, bool with_flow, float flow_scale) {
+  SynthFrame f = frame({x0}, {true}, with_flow);
+  f.instances.items[0].class_name = "person";
+  if (with_flow) f.flow_half *= flow_scale;
+  return f;
+}
+
 /// One frame at 30 Hz, camera at the identity, with the dynamics stage's verdicts `dynamics`.
 std::vector<TrackedObject> step(ObjectTracker& tracker, const SynthFrame& f, int index,
                                 const FrameDynamics& dynamics) {
@@ -356,9 +365,7 @@ TEST(ObjectTracker, AFrameWithoutMotionDoesNotRestartASettingOffCount) {
   std::vector<TrackedObject> out;
   for (int i = 0; i <= kNoDepthFrame + 2; ++i) {
     const bool moving = i > kStart;
-    SynthFrame f = frame({x}, {true}, i > 0);
-    f.instances.items[0].class_name = "person";
-    if (i > 0) f.flow_half *= moving ? kScale : 0.f;
+    SynthFrame f = personFrame(x, i > 0, moving ? kScale : 0.f);
     if (i == kNoDepthFrame) f.depth_m.setTo(0.f);
     out = step(tracker, f, i, FrameDynamics{});
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
@@ -682,10 +689,8 @@ TEST(ObjectTracker, APersonWhosePointsStopIsHeldStillWhileTheVerdictLags) {
     float x = 100.f;
     std::vector<TrackedObject> out;
     for (int i = 0; i < 40; ++i) {
-      SynthFrame f = frame({x}, {true}, i > 0);
-      f.instances.items[0].class_name = "person";
-      if (i > 0) f.flow_half *= i <= kStopFrame ? kScale : 0.f;
-      out = step(tracker, f, i);  // found moving in every frame
+      // Found moving in every frame.
+      out = step(tracker, personFrame(x, i > 0, i <= kStopFrame ? kScale : 0.f), i);
       ASSERT_EQ(out.size(), 1u) << "frame " << i;
       if (i == kStopFrame) {
         EXPECT_TRUE(out[0].dynamic);
@@ -717,10 +722,8 @@ TEST(ObjectTracker, ADawdlerWhosePointsReadSlowForTwoFramesIsNotHeld) {
   float x = 100.f;
   std::vector<TrackedObject> out;
   for (int i = 0; i < 40; ++i) {
-    SynthFrame f = frame({x}, {true}, i > 0);
-    f.instances.items[0].class_name = "person";
-    if (i >= kSlowFlowFrame && i <= kSlowFlowFrame + 2) f.flow_half.setTo(cv::Scalar(0.f, 0.f));
-    out = step(tracker, f, i);
+    const bool slow_flow = i >= kSlowFlowFrame && i <= kSlowFlowFrame + 2;
+    out = step(tracker, personFrame(x, i > 0, slow_flow ? 0.f : 1.f), i);
     ASSERT_EQ(out.size(), 1u) << "frame " << i;
     if (i >= kSlowFlowFrame - 5) {
       EXPECT_TRUE(out[0].dynamic) << "frame " << i;
