@@ -137,6 +137,16 @@ void KalmanCv::updateVelocityAlong(const Vec3& axis_world, double v_mps, double 
   correct(innovation(std::move(H), z, Eigen::MatrixXd::Constant(1, 1, sigma_mps * sigma_mps)));
 }
 
+bool KalmanCv::updateHeading(const Vec3& v_world_mps, const Vec3& up_world, double sigma_mps) {
+  if (!(sigma_mps > 0.0) || up_world.norm() < 1e-9) return false;
+  const Vec3 up = up_world.normalized();
+  const Vec3 v_level = velocity() - up.dot(velocity()) * up;
+  if (!(v_level.norm() > 2.0 * velocitySigma())) return false;
+  const Vec3 across = up.cross(v_level).normalized();
+  updateVelocityAlong(across, across.dot(v_world_mps), sigma_mps);
+  return true;
+}
+
 double KalmanCv::normalisedInnovation(const Vec3& p_world, const std::optional<Vec3>& v_world_mps,
                                       const std::optional<Mat3>& position_cov_world) const {
   const Innovation in = centreInnovation(p_world, v_world_mps, position_cov_world);

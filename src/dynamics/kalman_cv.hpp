@@ -52,6 +52,11 @@ class KalmanCv {
   /// One component of the velocity, along the unit `axis_world`, measured as v_mps +- sigma_mps
   /// (a pseudo-measurement of what is known without looking: a walker's vertical velocity).
   void updateVelocityAlong(const Vec3& axis_world, double v_mps, double sigma_mps);
+  /// The heading a velocity measurement gives: its component across the filtered direction of
+  /// travel in the plane normal to `up_world` (the floor's), +- sigma_mps; its length along that
+  /// direction does not enter. Nothing while that direction is not known (the level speed within
+  /// twice the velocity's sigma). Returns whether it entered.
+  bool updateHeading(const Vec3& v_world_mps, const Vec3& up_world, double sigma_mps);
   /// The squared Mahalanobis distance of that measurement from the prediction (its normalised
   /// innovation, chi-square with 3 or 6 degrees of freedom when the filter is consistent):
   /// how far outside what the covariance allows a measurement lies, before it is used.

@@ -274,3 +274,34 @@ TEST(KalmanCv, AVelocityComponentPseudoMeasurementMovesOnlyThatComponent) {
   EXPECT_NEAR(filter.covariance()(4, 4), p_vy * 0.09 / (p_vy + 0.09), 1e-9);
   EXPECT_LT((filter.covariance() - filter.covariance().transpose()).norm(), 1e-12);
 }
+
+TEST(KalmanCv, AHeadingMeasurementTurnsTheVelocityWithoutChangingItsLength) {
+  // A filter walking at 1.2 m/s along x, the floor's normal along y. The points read the walker
+  // heading 45 degrees off, at 0.8 m/s (a turn, and the flow's under-read): the velocity turns
+  // toward the new heading (z grows), its component along the old direction stays (the under-read
+  // does not slow it). A reading along the walk, slower or faster, changes nothing; nor does any
+  // reading while the direction is unknown (a new filter at rest).
+  const double dt = 1.0 / 30.0;
+  const Vec3 up(0.0, -1.0, 0.0);
+  KalmanCv walking(Vec3::Zero(), {});
+  for (int k = 1; k <= 60; ++k) {
+    walking.predict(dt);
+    walking.update(Vec3(1.2 * k * dt, 0, 0), std::nullopt);
+  }
+  ASSERT_NEAR(walking.velocity().x(), 1.2, 0.02);
+  KalmanCv turned = walking;
+  const double s = 0.8 / std::sqrt(2.0);
+  ASSERT_TRUE(turned.updateHeading(Vec3(s, 0.0, s), up, 0.3));
+  EXPECT_GT(turned.velocity().z(), 0.1);
+  EXPECT_LT(turned.velocity().z(), s);
+  EXPECT_NEAR(turned.velocity().x(), walking.velocity().x(), 0.01);
+  for (const double along : {0.5, 2.0}) {
+    KalmanCv same = walking;
+    ASSERT_TRUE(same.updateHeading(Vec3(along, 0.0, walking.velocity().z()), up, 0.3));
+    EXPECT_LT((same.velocity() - walking.velocity()).norm(), 1e-9) << along;
+  }
+  KalmanCv at_rest(Vec3::Zero(), {});
+  EXPECT_FALSE(at_rest.updateHeading(Vec3(s, 0.0, s), up, 0.3));
+  EXPECT_EQ(at_rest.velocity(), Vec3::Zero());
+  EXPECT_FALSE(turned.updateHeading(Vec3(s, 0.0, s), up, 0.0));  // sigma 0: off
+}

@@ -39,6 +39,7 @@ struct ObjectTrackingConfig {
   double position_sigma_m = 0.05;
   double velocity_sigma_mps = 0.6;
   int motion_velocity_frames = 10;
+  double heading_sigma_mps = 0.3;
   double velocity_known_sigma_mps = 0.3;
   int static_after_frames = 3;
   int stop_after_slow_frames = 2;
@@ -169,6 +170,12 @@ struct ObjectTrackingConfig {
       "its error is a bias (dense flow under-reads smooth clothes) that filtering does not "
       "average out; the centre track's does not have it (-1: always)",
       Range{-1, 100000});
+    v("heading_sigma_mps", heading_sigma_mps,
+      "after motion_velocity_frames, the rigid-motion velocity's component across the filtered "
+      "direction of travel (in the floor's plane) still enters, +- this (m/s): the heading, which "
+      "the points follow through a turn while the centre cuts the corner; its length along the "
+      "walk does not (0: off; docs/tracking.md 'Session 36')",
+      Range{0, 100});
     v("velocity_known_sigma_mps", velocity_known_sigma_mps,
       "a track reports its velocity as known (objects.jsonl velocity_known) once the filter's "
       "velocity standard deviation (largest axis) is below this (m/s); until then it is the prior",
