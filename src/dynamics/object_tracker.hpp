@@ -126,6 +126,12 @@ class ObjectTracker {
                       const ObjectTrackerInput& input);
   void update(Track& track, const Carried& carried, const Instance* instance,
               const ObjectTrackerInput& input);
+  /// Moving or standing after this frame's update (track.still, track.stationary; a held track's
+  /// filter held still, a released person's reopened): from the dynamics stage's verdict on
+  /// `instance`, the points' motion along the floor `v_walk` (none: no rigid motion this frame)
+  /// and the filter (object_tracker_still.cpp).
+  void judgeStill(Track& track, const Instance* instance, const std::optional<Vec3>& v_walk,
+                  bool verified_static, const ObjectTrackerInput& input);
   std::optional<Track> start(const Instance& instance, const ObjectTrackerInput& input);
   /// The track ends while out of the camera's view: its centre projects outside the image (or
   /// behind the camera), or the image's side cut it when it was last seen.

@@ -141,3 +141,37 @@ TEST(ObjectTracker, AWalkersHeadingComesFromItsPointsOnceItsCentresCarryTheVeloc
   EXPECT_GT(with_heading, 0.1);        // 0.185
   EXPECT_LT(std::abs(without), 0.05);  // 0.001
 }
+
+TEST(ObjectTracker, AWalkerWhoStopsIsHeldThoughItsBodyRisesIntoAStandingPose) {
+  // A walker crossing 3 m ahead at 1 m/s stops; in the two frames after the stop its points rise
+  // at 0.3 m/s (a stride closing into a standing pose) with no motion along the floor. Its speed
+  // is judged along the floor: two slow frames, and it is held still (stop_after_slow_frames);
+  // judged in 3D, 0.3 m/s is no stop.
+  const PinholeCamera c;
+  ObjectTracker tracker(ObjectTrackingConfig{}, 5);
+  constexpr int kStopFrame = 40;  // the last frame it moved into
+  double x_m = -1.0;
+  std::vector<TrackedObject> out;
+  for (int i = 0; i <= kStopFrame + 2; ++i) {
+    const double t = i / kFps, z_m = 3.0;
+    const Frame f = walkerOnAFloor(x_m, z_m, 0.0, true, c);
+    FrameDynamics dynamics;
+    dynamics.moving_ids.push_back(1);  // the scene flow's verdict lags the stop
+    const double front_m = z_m - 0.15;
+    const bool rising = i > kStopFrame;
+    const float dx_half = rising ? 0.f : float(0.5 * c.fx * 1.0 / kFps / front_m);
+    const float dy_half = rising ? float(-0.5 * c.fy * 0.3 / kFps / front_m) : 0.f;
+    const cv::Mat flow_half =
+        i > 0 ? cv::Mat(c.height / 2, c.width / 2, CV_32FC2, cv::Scalar(dx_half, dy_half))
+              : cv::Mat();
+    out = tracker.track(
+        {i, t, f.instances, dynamics, flow_half, f.depth_m, SE3::Identity(), true, c});
+    ASSERT_EQ(out.size(), 1u) << "frame " << i;
+    if (i == kStopFrame) {
+      EXPECT_TRUE(out[0].dynamic);
+    }
+    if (i < kStopFrame) x_m += 1.0 / kFps;
+  }
+  EXPECT_FALSE(out[0].dynamic);
+  EXPECT_EQ(out[0].speed_mps, 0.0);
+}
