@@ -68,9 +68,11 @@ void ObjectTracker::judgeStill(Track& track, const Instance* instance,
   // walker stopping from 0.7 m/s: the points read 0.16 and 0.03 m/s in the two frames after the
   // stop, the filter 0.64 and 0.57, held still only in the third). Two slow frames in a row, not
   // one: a walker's one-frame motion reads slow now and then (6 single frames in the clean runs
-  // of the tracking table's eight sequences, none two in a row). And only where the points read
-  // the walker's speed before they read it stop: points whose flow under-reads the object (smooth
-  // clothes, a part the flow drags with the background) read slow all along while its centre moves.
+  // of the tracking table's eight sequences, none two in a row; and no walker slows from 0.7 to
+  // 0.16 m/s within a frame, 16 m/s^2: one slow frame held Bonn walkers still, docs/tracking.md
+  // "Session 36"). And only where the points read the walker's speed before they read it stop:
+  // points whose flow under-reads the object (smooth clothes, a part the flow drags with the
+  // background) read slow all along while its centre moves.
   // And only from a walk clearly faster than "slow" (twice static_speed_mps): a dawdler's points
   // read slow now and then without a stop (Bonn crowd: a walker filtered at 0.33 m/s, its centre
   // moving on at that pace, was held still for 8 frames). Once held, slow points keep it held.
