@@ -40,6 +40,12 @@ inline double rotationAngle(const Mat3& R) {
   return std::acos(c);
 }
 
+/// The part of v in the plane whose unit normal is given (the floor's plane, with the floor's up:
+/// people walk in it; a body's rise and sink is the rest).
+inline Vec3 projectOntoPlane(const Vec3& v, const Vec3& unit_normal) {
+  return v - unit_normal.dot(v) * unit_normal;
+}
+
 /// Pose update by a 6-vector (rho, omega) applied on the left: exp(xi) * T.
 inline SE3 leftPerturb(const Eigen::Matrix<double, 6, 1>& xi, const SE3& T) {
   SE3 D = SE3::Identity();

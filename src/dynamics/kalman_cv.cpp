@@ -140,7 +140,7 @@ void KalmanCv::updateVelocityAlong(const Vec3& axis_world, double v_mps, double 
 bool KalmanCv::updateHeading(const Vec3& v_world_mps, const Vec3& up_world, double sigma_mps) {
   if (!(sigma_mps > 0.0) || up_world.norm() < 1e-9) return false;
   const Vec3 up = up_world.normalized();
-  const Vec3 v_level = velocity() - up.dot(velocity()) * up;
+  const Vec3 v_level = projectOntoPlane(velocity(), up);
   if (!(v_level.norm() > 2.0 * velocitySigma())) return false;
   const Vec3 across = up.cross(v_level).normalized();
   updateVelocityAlong(across, across.dot(v_world_mps), sigma_mps);

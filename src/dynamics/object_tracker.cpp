@@ -413,10 +413,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // frames after a stop in simulated office seed 2, 0.03-0.09 along the floor), which is not
   // walking, as the filter is told every frame (vertical_speed_sigma_mps).
   std::optional<Vec3> v_walk = v_measured;
-  if (v_walk && up_world) {
-    const Vec3 up = up_world->normalized();
-    *v_walk -= up.dot(*v_walk) * up;
-  }
+  if (v_walk && up_world) *v_walk = projectOntoPlane(*v_walk, up_world->normalized());
   judgeStill(track, instance, v_walk, verified_static, input);
 }
 

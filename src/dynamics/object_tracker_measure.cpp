@@ -37,9 +37,8 @@ std::optional<double> ObjectTracker::headingAbsCos(const Track& track, const Vec
   const Vec3 v_world = track.filter.velocity();
   if (!filterVelocityKnown(track) || isSlow(v_world)) return std::nullopt;
   const Vec3 n = floor_->normal_camera.normalized();
-  const auto level = [&](const Vec3& x) { return Vec3(x - n.dot(x) * n); };
-  const Vec3 v = level(input.T_world_camera.linear().transpose() * v_world);
-  const Vec3 ray = level(p_camera);
+  const Vec3 v = projectOntoPlane(input.T_world_camera.linear().transpose() * v_world, n);
+  const Vec3 ray = projectOntoPlane(p_camera, n);
   if (!(v.norm() > 1e-6) || !(ray.norm() > 1e-6)) return std::nullopt;
   return std::abs(v.normalized().dot(ray.normalized()));
 }

@@ -95,7 +95,7 @@ OccupancyGrid occupancyGrid(const octomap::ColorOcTree& tree, const FloorPlane& 
   grid.cell_m = cell_m;
   grid.floor = floor;
   const Vec3 up = floor.up;
-  grid.right = (Vec3::UnitX() - Vec3::UnitX().dot(up) * up).normalized();
+  grid.right = projectOntoPlane(Vec3::UnitX(), up).normalized();
   grid.forward = up.cross(grid.right).normalized();
   if (grid.forward.dot(Vec3::UnitZ()) < 0) grid.forward = -grid.forward;
   struct Leaf {

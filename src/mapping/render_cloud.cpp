@@ -11,7 +11,7 @@ cv::Mat renderCloud(const ColouredCloud& cloud, const FloorPlane& floor, const C
   if (view.kind != "top" && view.kind != "oblique")
     throw InputError("--view", "expected top or oblique, got '" + view.kind + "'");
   const Vec3 up = floor.found ? floor.up : Vec3(0, -1, 0);
-  const Vec3 right = (Vec3::UnitX() - Vec3::UnitX().dot(up) * up).normalized();
+  const Vec3 right = projectOntoPlane(Vec3::UnitX(), up).normalized();
   const Vec3 forward = up.cross(right).normalized();
   // Points in floor coordinates (right, forward, height), the ceiling cut.
   std::vector<Vec3> q;
