@@ -51,11 +51,19 @@ struct Reported {
   double mean_horizontal_mps = 0.0;
 };
 
-Reported walkAcross(double vertical_speed_sigma_mps, bool floor_in_view) {
+/// `empty_floor_frames` frames of the floor in view with nobody on it come first (stamps before
+/// the walk's).
+Reported walkAcross(double vertical_speed_sigma_mps, bool floor_in_view,
+                    int empty_floor_frames = 0) {
   const PinholeCamera c;
   ObjectTrackingConfig config;
   config.vertical_speed_sigma_mps = vertical_speed_sigma_mps;
   ObjectTracker tracker(config, 5);
+  const cv::Mat floor_depth_m = test::levelFloorDepth(c, kCameraAboveFloorM, 4.5);
+  for (int i = 0; i < empty_floor_frames; ++i)
+    tracker.track({i - empty_floor_frames, (i - empty_floor_frames) / kFps,
+                   Instances::none(cv::Size(c.width, c.height)), FrameDynamics{}, cv::Mat(),
+                   floor_depth_m, SE3::Identity(), true, c});
   Reported r;
   int counted = 0;
   for (int i = 0; i < 90; ++i) {
@@ -99,6 +107,16 @@ TEST(ObjectTracker, WithoutAFloorInViewTheVerticalVelocityIsLeftToTheMeasurement
   EXPECT_GT(free.max_vertical_mps, 0.1);
   EXPECT_DOUBLE_EQ(along_floor.max_vertical_mps, free.max_vertical_mps);
   EXPECT_DOUBLE_EQ(along_floor.mean_horizontal_mps, free.mean_horizontal_mps);
+}
+
+TEST(ObjectTracker, TheFloorSeenBeforeAnyoneEntersHoldsTheWalkerToItWhenItIsOutOfViewLater) {
+  // The floor is followed from the run's start, not only while something is tracked: seen for a
+  // second before the walker enters, it constrains the walk while no floor shows below him (the
+  // simulated office's first walker entered behind a pin board, the floor unknown until then).
+  const Reported along_floor = walkAcross(0.3, false, 30);
+  const Reported free = walkAcross(0.0, false, 30);
+  EXPECT_GT(free.max_vertical_mps, 0.1);
+  EXPECT_LT(along_floor.max_vertical_mps, 0.5 * free.max_vertical_mps);
 }
 
 namespace {
