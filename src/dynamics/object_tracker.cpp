@@ -167,9 +167,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   track.reanchored = false;
   if (dt > 0.0) track.filter.predict(dt);
   // The floor's normal in the world, when the floor is in view: people move in its plane.
-  const std::optional<Vec3> up_world =
-      floor_ ? std::optional<Vec3>(input.T_world_camera.linear() * floor_->normal_camera)
-             : std::nullopt;
+  const std::optional<Vec3> up_world = upWorld(input);
   if (!input.tracked) {  // no camera pose: no world points; the filter coasts
     track.pixels.clear();
     for (const auto& px : carried.pixels) track.pixels.emplace_back(float(px.x()), float(px.y()));
@@ -371,6 +369,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       } else {
         track.filter.update(p_world, v_used, cov_world);
       }
+      if (v_used) applyWalkingSpeedPrior(track, up_world);
       // Once the rigid motion no longer enters (the centres carry the velocity), its heading
       // still does: the centre of a turning walker cuts the corner (simulated office, a 60-90
       // degree turn at 1.2 m/s: the measured centre fell up to 0.1 m inside the truth's path and
@@ -417,7 +416,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
   // frames after a stop in simulated office seed 2, 0.03-0.09 along the floor), which is not
   // walking, as the filter is told every frame (vertical_speed_sigma_mps).
   std::optional<Vec3> v_walk = v_measured;
-  if (v_walk && up_world) *v_walk = projectOntoPlane(*v_walk, up_world->normalized());
+  if (v_walk && up_world) *v_walk = projectOntoPlane(*v_walk, *up_world);
   judgeStill(track, instance, v_walk, verified_static, input);
 }
 

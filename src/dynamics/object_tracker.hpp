@@ -85,6 +85,9 @@ class ObjectTracker {
     int points_agree = 0;
     int inliers = 0;
     int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
+    // A person found moving whose filter has not yet been given a walker's speed as the prior
+    // of its speed (applyWalkingSpeedPrior).
+    bool walking_prior_pending = false;
     // > 0: every centre the filter has heard came from the height range (height_range.hpp), so
     // they share one error, the stature's (this relative sigma), which the filter was not told of
     // (it would have averaged it as if new in every frame); reported beside the filter's
@@ -149,6 +152,13 @@ class ObjectTracker {
   [[nodiscard]] bool isSlow(const Vec3& v_mps) const;
   /// The filter's velocity is known and slow: the track stands (or its heading says nothing).
   [[nodiscard]] bool filterKnownSlow(const Track& track) const;
+  /// The floor's up in the world, when the floor is known (floor_).
+  [[nodiscard]] std::optional<Vec3> upWorld(const ObjectTrackerInput& input) const;
+  /// A person found moving walks at a walker's speed: once its filter holds a velocity measured
+  /// from its points but not yet known, its speed along that direction in the floor's plane is
+  /// told walking_speed_mps +- walking_speed_sigma_mps, once (the prior a zero-mean velocity
+  /// lacks). Waits while the floor is unknown or the measured level speed is slow.
+  void applyWalkingSpeedPrior(Track& track, const std::optional<Vec3>& up_world) const;
   /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.
   [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;
   /// The configured noise of a track's filter (a new track, or one restarted at a centre).

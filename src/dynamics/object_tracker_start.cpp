@@ -25,6 +25,32 @@ KalmanCvNoise ObjectTracker::filterNoise() const {
           kInitialVelocitySigmaMps};
 }
 
+std::optional<Vec3> ObjectTracker::upWorld(const ObjectTrackerInput& input) const {
+  if (!floor_) return std::nullopt;
+  return (input.T_world_camera.linear() * floor_->normal_camera).normalized();
+}
+
+void ObjectTracker::applyWalkingSpeedPrior(Track& track,
+                                           const std::optional<Vec3>& up_world) const {
+  // A new track's velocity prior is 0 +- 1 m/s in every direction, and a standstill is no moving
+  // person's speed: fused with it, a walker's first readings shrink by a quarter (simulated office
+  // seed 3: a walker entering at 1.2 m/s read 0.78, 0.89, 0.96 m/s in its first frames). People
+  // walk at about 1.2 m/s in a direction the prior cannot know; the points' first motion gives the
+  // direction, and the speed along it is then told the walker's. Once: it is a prior, not a
+  // measurement.
+  if (!track.walking_prior_pending) return;
+  if (filterVelocityKnown(track) || config_.walking_speed_sigma_mps <= 0.0) {
+    track.walking_prior_pending = false;
+    return;
+  }
+  if (!up_world) return;
+  const Vec3 v_level = projectOntoPlane(track.filter.velocity(), *up_world);
+  if (isSlow(v_level) || v_level.norm() <= 2.0 * track.filter.velocitySigma()) return;
+  track.filter.updateVelocityAlong(v_level.normalized(), config_.walking_speed_mps,
+                                   config_.walking_speed_sigma_mps);
+  track.walking_prior_pending = false;
+}
+
 bool ObjectTracker::beyondWalkersSpeed(const Vec3& v_world_mps) {
   return v_world_mps.squaredNorm() >
          kChiSquare3Dof999 * kInitialVelocitySigmaMps * kInitialVelocitySigmaMps;
@@ -138,6 +164,8 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
       t.motion = first->H_world;
       t.inliers = first->inliers;
     }
+  t.walking_prior_pending = t.prior_dynamic && !t.stationary;
+  if (t.inliers > 0) applyWalkingSpeedPrior(t, upWorld(input));
   return t;
 }
 

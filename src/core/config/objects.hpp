@@ -40,6 +40,8 @@ struct ObjectTrackingConfig {
   double velocity_sigma_mps = 0.6;
   int motion_velocity_frames = 10;
   double heading_sigma_mps = 0.3;
+  double walking_speed_mps = 1.2;
+  double walking_speed_sigma_mps = 0.4;
   double velocity_known_sigma_mps = 0.3;
   int static_after_frames = 3;
   int stop_after_slow_frames = 2;
@@ -176,6 +178,14 @@ struct ObjectTrackingConfig {
       "the points follow through a turn while the centre cuts the corner; its length along the "
       "walk does not (0: off; docs/tracking.md 'Session 36')",
       Range{0, 100});
+    v("walking_speed_mps", walking_speed_mps,
+      "a person found moving walks about this fast (m/s): with walking_speed_sigma_mps, the prior "
+      "of a new moving person's speed along the direction its first motion measures",
+      Range{0, 10});
+    v("walking_speed_sigma_mps", walking_speed_sigma_mps,
+      "spread of walking_speed_mps (m/s; 0: off, a new track's velocity prior is then 0 +- 1 m/s "
+      "in every direction; docs/tracking.md 'Session 37')",
+      Range{0, 10});
     v("velocity_known_sigma_mps", velocity_known_sigma_mps,
       "a track reports its velocity as known (objects.jsonl velocity_known) once the filter's "
       "velocity standard deviation (largest axis) is below this (m/s); until then it is the prior",
