@@ -30,7 +30,7 @@ std::vector<TrackedObject> ObjectTracker::track(const ObjectTrackerInput& input)
   // The floor, every tracked frame: far walkers stand on it (the soles' range), and what is
   // tracked moves along it (the vertical velocity). Followed from the run's start, not only
   // while something is tracked, so it is known when a walker enters a view where little of it
-  // shows (simulated office: the floor filled half the image's lower rows at the start, 6-29 %
+  // shows (simulated office: the floor filled half the image's lower rows at the start, 10-29 %
   // behind a pin board where the first walker entered, and was unknown for his first 10 frames;
   // his centre's rise as his body came into view read 0.6 m/s upward, docs/tracking.md
   // "Session 37").
