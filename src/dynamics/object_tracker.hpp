@@ -85,8 +85,8 @@ class ObjectTracker {
     int points_agree = 0;
     int inliers = 0;
     int whole_centre_frames = 0;  // frames in a row whose centre was measured whole
-    // A person found moving whose filter has not yet been given a walker's speed as the prior
-    // of its speed (applyWalkingSpeedPrior).
+    // A new person track, not held still, whose filter has not yet been given a walker's speed
+    // as the prior of its speed (applyWalkingSpeedPrior).
     bool walking_prior_pending = false;
     // > 0: every centre the filter has heard came from the height range (height_range.hpp), so
     // they share one error, the stature's (this relative sigma), which the filter was not told of
@@ -154,10 +154,10 @@ class ObjectTracker {
   [[nodiscard]] bool filterKnownSlow(const Track& track) const;
   /// The floor's up in the world, when the floor is known (floor_).
   [[nodiscard]] std::optional<Vec3> upWorld(const ObjectTrackerInput& input) const;
-  /// A person found moving walks at a walker's speed: once its filter holds a velocity measured
-  /// from its points but not yet known, its speed along that direction in the floor's plane is
-  /// told walking_speed_mps +- walking_speed_sigma_mps, once (the prior a zero-mean velocity
-  /// lacks). Waits while the floor is unknown or the measured level speed is slow.
+  /// A new person track walks at a walker's speed: once its filter holds a velocity measured
+  /// from its points, clearly one way in the floor's plane but not yet known, its speed along
+  /// that direction is told walking_speed_mps +- walking_speed_sigma_mps, once (the prior a
+  /// zero-mean velocity lacks). Waits while the floor is unknown or the direction is not clear.
   void applyWalkingSpeedPrior(Track& track, const std::optional<Vec3>& up_world) const;
   /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.
   [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;

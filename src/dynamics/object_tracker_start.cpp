@@ -37,7 +37,12 @@ void ObjectTracker::applyWalkingSpeedPrior(Track& track,
   // seed 3: a walker entering at 1.2 m/s read 0.78, 0.89, 0.96 m/s in its first frames). People
   // walk at about 1.2 m/s in a direction the prior cannot know; the points' first motion gives the
   // direction, and the speed along it is then told the walker's. Once: it is a prior, not a
-  // measurement.
+  // measurement. Only once that direction is clear (its level speed above twice the velocity's
+  // sigma): a first reading from a sliver at the image's side can point the wrong way (simulated
+  // office-ramped seed 1: toward the camera for a walker going away), and a walker's speed told
+  // along it made the filter confidently wrong (that seed 0.110 -> 0.153 m/s, docs/tracking.md
+  // "Session 37"). Not for a person released from being held still: one setting off from a
+  // standstill is not yet at a walker's speed.
   if (!track.walking_prior_pending) return;
   if (filterVelocityKnown(track) || config_.walking_speed_sigma_mps <= 0.0) {
     track.walking_prior_pending = false;
@@ -164,7 +169,7 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
       t.motion = first->H_world;
       t.inliers = first->inliers;
     }
-  t.walking_prior_pending = t.prior_dynamic && !t.stationary;
+  t.walking_prior_pending = t.class_name == "person" && !t.stationary;
   if (t.inliers > 0) applyWalkingSpeedPrior(t, upWorld(input));
   return t;
 }

@@ -179,8 +179,8 @@ struct ObjectTrackingConfig {
       "walk does not (0: off; docs/tracking.md 'Session 36')",
       Range{0, 100});
     v("walking_speed_mps", walking_speed_mps,
-      "a person found moving walks about this fast (m/s): with walking_speed_sigma_mps, the prior "
-      "of a new moving person's speed along the direction its first motion measures",
+      "a person walks about this fast (m/s): with walking_speed_sigma_mps, the prior of a new "
+      "person track's speed along the direction its first motions clearly measure",
       Range{0, 10});
     v("walking_speed_sigma_mps", walking_speed_sigma_mps,
       "spread of walking_speed_mps (m/s; 0: off, a new track's velocity prior is then 0 +- 1 m/s "
