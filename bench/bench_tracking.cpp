@@ -1,8 +1,10 @@
 // Per-frame cost of the object tracker (step 8) with two people in view: two 80 x 200 px
 // walkers sliding across a 640 x 480 frame with a uniform flow field, at 2 and 3 m, on a
-// textured image (each person's own flow, objects.own_flow, runs on it).
+// textured image (each person's own flow, objects.own_flow, runs on it). And the floor's fit,
+// which the tracker runs in every tracked frame (since session 37, also with nobody in view).
 #include <benchmark/benchmark.h>
 
+#include "dynamics/floor_plane.hpp"
 #include "dynamics/object_tracker.hpp"
 
 using namespace dynanav;
@@ -67,8 +69,31 @@ void BM_TrackTwoPeople(benchmark::State& state) {
     ++i;
   }
 }
+/// One floor fit (estimateFloorPlane, default options) on a 640 x 480 depth image of a level
+/// floor 1.5 m below a level camera, seen up to 4.5 m, with 1 cm of noise.
+void BM_FitTheFloor(benchmark::State& state) {
+  PinholeCamera camera;
+  camera.fx = camera.fy = 525.0;
+  camera.cx = 319.5;
+  camera.cy = 239.5;
+  cv::Mat depth_m(480, 640, CV_32F, cv::Scalar(0.f));
+  cv::RNG rng(1);
+  for (int v = 0; v < depth_m.rows; ++v) {
+    const double z_m = v > camera.cy ? camera.fy * 1.5 / (v - camera.cy) : 0.0;
+    if (z_m <= 0.0 || z_m > 4.5) continue;
+    for (int u = 0; u < depth_m.cols; ++u)
+      depth_m.at<float>(v, u) = float(z_m + rng.gaussian(0.01));
+  }
+  const Vec3 up_camera(0.0, -1.0, 0.0);
+  for (auto _ : state) {
+    auto floor = estimateFloorPlane(depth_m, camera, up_camera);
+    benchmark::DoNotOptimize(floor);
+  }
+}
+
 BENCHMARK(BM_TrackTwoPeople)->Arg(0)->Arg(1)->ArgName("fr1_lens")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
+BENCHMARK(BM_FitTheFloor)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
