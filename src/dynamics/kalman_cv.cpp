@@ -24,13 +24,26 @@ KalmanCv::Mat6 KalmanCv::transition(double dt_s) const {
 }
 
 KalmanCv::Mat6 KalmanCv::processNoise(double dt_s) const {
+  // The acceleration's covariance: isotropic until the direction of travel is clear, then split
+  // along and across it. A walker's pace is steadier than its heading: one noise low enough to
+  // hold a straight walk's speed steady lets a turning walker's velocity cut the corner (its
+  // length sags), and one wide enough for the turn shakes the straight walks' speed (simulated
+  // crossing and office, docs/tracking.md "Session 38").
   const double q = noise_.accel_sigma_mps2 * noise_.accel_sigma_mps2;
+  Mat3 A = Mat3::Identity() * q;
+  if (noise_.pace_accel_sigma_mps2 > 0.0) {
+    if (const std::optional<Vec3> along = clearDirection(velocity())) {
+      const double q_along = noise_.pace_accel_sigma_mps2 * noise_.pace_accel_sigma_mps2;
+      const Mat3 T = *along * along->transpose();
+      A = T * q_along + (Mat3::Identity() - T) * q;
+    }
+  }
   const double dt2 = dt_s * dt_s, dt3 = dt2 * dt_s;
   Mat6 Q = Mat6::Zero();
-  Q.topLeftCorner<3, 3>() = Mat3::Identity() * q * dt3 / 3.0;
-  Q.topRightCorner<3, 3>() = Mat3::Identity() * q * dt2 / 2.0;
-  Q.bottomLeftCorner<3, 3>() = Mat3::Identity() * q * dt2 / 2.0;
-  Q.bottomRightCorner<3, 3>() = Mat3::Identity() * q * dt_s;
+  Q.topLeftCorner<3, 3>() = A * dt3 / 3.0;
+  Q.topRightCorner<3, 3>() = A * dt2 / 2.0;
+  Q.bottomLeftCorner<3, 3>() = A * dt2 / 2.0;
+  Q.bottomRightCorner<3, 3>() = A * dt_s;
   return Q;
 }
 
@@ -140,9 +153,9 @@ void KalmanCv::updateVelocityAlong(const Vec3& axis_world, double v_mps, double 
 bool KalmanCv::updateHeading(const Vec3& v_world_mps, const Vec3& up_world, double sigma_mps) {
   if (!(sigma_mps > 0.0) || up_world.norm() < 1e-9) return false;
   const Vec3 up = up_world.normalized();
-  const Vec3 v_level = projectOntoPlane(velocity(), up);
-  if (!(v_level.norm() > 2.0 * velocitySigma())) return false;
-  const Vec3 across = up.cross(v_level).normalized();
+  const std::optional<Vec3> travel = clearDirection(projectOntoPlane(velocity(), up));
+  if (!travel) return false;
+  const Vec3 across = up.cross(*travel).normalized();
   updateVelocityAlong(across, across.dot(v_world_mps), sigma_mps);
   return true;
 }
@@ -163,6 +176,11 @@ void KalmanCv::holdStill() {
 void KalmanCv::reopen(double position_sigma_m, double velocity_sigma_mps) {
   P_.topLeftCorner<3, 3>() += Mat3::Identity() * position_sigma_m * position_sigma_m;
   P_.bottomRightCorner<3, 3>() += Mat3::Identity() * velocity_sigma_mps * velocity_sigma_mps;
+}
+
+std::optional<Vec3> KalmanCv::clearDirection(const Vec3& v_world_mps) const {
+  if (!(v_world_mps.norm() > 2.0 * velocitySigma())) return std::nullopt;
+  return v_world_mps.normalized();
 }
 
 double KalmanCv::velocitySigma() const {

@@ -1,9 +1,11 @@
 #pragma once
 // Constant-velocity Kalman filter of an object's centre in the world frame: state x = [p, v]
 // (m, m/s), white-noise acceleration of spectral density accel_sigma^2 (the discretised
-// process noise of Bar-Shalom, "Estimation with Applications to Tracking", §6.3.2). Measurements
-// are the centre (from the object's points) and, when the rigid motion was estimated, the
-// centroid velocity; both enter in one update with their own noise.
+// process noise of Bar-Shalom, "Estimation with Applications to Tracking", §6.3.2); once the
+// direction of travel is clear, pace_accel_sigma^2 along it (people change their pace less
+// readily than their heading). Measurements are the centre (from the object's points)
+// and, when the rigid motion was estimated, the centroid velocity; both enter in one update with
+// their own noise.
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -18,6 +20,9 @@ struct KalmanCvNoise {
   double position_sigma_m = 0.05;   ///< centre measurement
   double velocity_sigma_mps = 0.6;  ///< one-frame centroid velocity measurement
   double initial_velocity_sigma_mps = 1.0;
+  /// Process noise along the direction of travel once it is clear (clearDirection);
+  /// accel_sigma_mps2 stays across it. 0: accel_sigma_mps2 in every direction.
+  double pace_accel_sigma_mps2 = 0.0;
 };
 
 class KalmanCv {
@@ -76,6 +81,9 @@ class KalmanCv {
   [[nodiscard]] Vec3 position() const { return x_.head<3>(); }
   [[nodiscard]] Vec3 velocity() const { return x_.tail<3>(); }
   [[nodiscard]] const Mat6& covariance() const { return P_; }
+  /// The unit direction of `v_world_mps` (the filtered velocity or a part of it) when its length
+  /// is more than twice the velocity's sigma: the filter knows which way the object goes.
+  [[nodiscard]] std::optional<Vec3> clearDirection(const Vec3& v_world_mps) const;
   /// Standard deviation of the velocity along its least certain axis (m/s).
   [[nodiscard]] double velocitySigma() const;
   /// Predicted centre every step_s up to horizon_s, with its spread.

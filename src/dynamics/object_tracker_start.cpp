@@ -22,7 +22,7 @@ ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) c
 
 KalmanCvNoise ObjectTracker::filterNoise() const {
   return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
-          kInitialVelocitySigmaMps};
+          kInitialVelocitySigmaMps, config_.pace_accel_sigma_mps2};
 }
 
 std::optional<Vec3> ObjectTracker::upWorld(const ObjectTrackerInput& input) const {
@@ -50,8 +50,9 @@ void ObjectTracker::applyWalkingSpeedPrior(Track& track,
   }
   if (!up_world) return;
   const Vec3 v_level = projectOntoPlane(track.filter.velocity(), *up_world);
-  if (isSlow(v_level) || v_level.norm() <= 2.0 * track.filter.velocitySigma()) return;
-  track.filter.updateVelocityAlong(v_level.normalized(), config_.walking_speed_mps,
+  const std::optional<Vec3> travel = track.filter.clearDirection(v_level);
+  if (isSlow(v_level) || !travel) return;
+  track.filter.updateVelocityAlong(*travel, config_.walking_speed_mps,
                                    config_.walking_speed_sigma_mps);
   track.walking_prior_pending = false;
 }

@@ -36,6 +36,7 @@ struct ObjectTrackingConfig {
   double refine_huber_px = 1.0;
   int refine_iterations = 10;
   double accel_sigma_mps2 = 0.5;
+  double pace_accel_sigma_mps2 = 0.35;
   double position_sigma_m = 0.05;
   double velocity_sigma_mps = 0.6;
   int motion_velocity_frames = 10;
@@ -157,8 +158,14 @@ struct ObjectTrackingConfig {
       Range{0, 100, Range::kOpenLow});
     v("refine_iterations", refine_iterations,
       "Ceres refinement: most Levenberg-Marquardt iterations", Range{0, 1000});
-    v("accel_sigma_mps2", accel_sigma_mps2, "Kalman filter: unmodelled acceleration (m/s^2)",
+    v("accel_sigma_mps2", accel_sigma_mps2,
+      "Kalman filter: unmodelled acceleration (m/s^2; across the direction of travel once it is "
+      "clear, in every direction before)",
       Range{0, 100, Range::kOpenLow});
+    v("pace_accel_sigma_mps2", pace_accel_sigma_mps2,
+      "Kalman filter: unmodelled acceleration along a clear direction of travel (m/s^2; a walker's "
+      "pace is steadier than its heading); 0: as accel_sigma_mps2",
+      Range{0, 100});
     v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)",
       Range{0, 10, Range::kOpenLow});
     v("velocity_sigma_mps", velocity_sigma_mps,
