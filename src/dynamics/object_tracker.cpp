@@ -292,7 +292,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // "Session 20").
     if (instance && !track.prior_dynamic && config_.restart_beyond_gate &&
         track.filter.normalisedInnovation(p_world, std::nullopt, cov_world) > kChiSquare3Dof999) {
-      track.filter = KalmanCv(p_world, filterNoise(), cov_world);
+      track.filter = KalmanCv(p_world, filterNoise(track.class_name), cov_world);
       track.restarted = true;
     } else if (!track.prior_dynamic && track.stationary && instance &&
                input.dynamics.foundMoving(instance->id)) {
@@ -335,7 +335,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
       const Vec3 innovation = p_world - track.filter.position();
       track.ranges_refuted = false;  // placed by depth: its next ranges are judged afresh
       if (innovation.dot(S.ldlt().solve(innovation)) > kChiSquare3Dof999) {
-        track.filter = KalmanCv(p_world, filterNoise(), cov_world);
+        track.filter = KalmanCv(p_world, filterNoise(track.class_name), cov_world);
         track.restarted = true;
       }
     }
@@ -399,7 +399,7 @@ void ObjectTracker::update(Track& track, const Carried& carried, const Instance*
     // person, where the hand-over above judges the position.
     track.ranges_refuted = true;
     const Mat3 position_cov = track.filter.covariance().topLeftCorner<3, 3>();
-    track.filter = KalmanCv(track.filter.position(), filterNoise(), position_cov);
+    track.filter = KalmanCv(track.filter.position(), filterNoise(track.class_name), position_cov);
   }
   if (ranged_centre) {
     // Placed by its height, without depth: the dynamics stage has nothing to find it moving by,

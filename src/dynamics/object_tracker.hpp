@@ -161,8 +161,9 @@ class ObjectTracker {
   void applyWalkingSpeedPrior(Track& track, const std::optional<Vec3>& up_world) const;
   /// The EPnP-RANSAC and refinement settings of this frame's motion of track `id`.
   [[nodiscard]] ObjectMotionOptions motionOptions(int frame_index, uint64_t id) const;
-  /// The configured noise of a track's filter (a new track, or one restarted at a centre).
-  [[nodiscard]] KalmanCvNoise filterNoise() const;
+  /// The configured noise of the filter of a track of `class_name` (a new track, or one restarted
+  /// at a centre).
+  [[nodiscard]] KalmanCvNoise filterNoise(const std::string& class_name) const;
   /// A velocity no walker has: outside a new track's prior (0 +- 1 m/s per axis) at 99.9 %.
   [[nodiscard]] static bool beyondWalkersSpeed(const Vec3& v_world_mps);
   struct Centre {

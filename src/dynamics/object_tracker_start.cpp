@@ -20,9 +20,13 @@ ObjectMotionOptions ObjectTracker::motionOptions(int frame_index, uint64_t id) c
   return options;
 }
 
-KalmanCvNoise ObjectTracker::filterNoise() const {
+KalmanCvNoise ObjectTracker::filterNoise(const std::string& class_name) const {
+  // A walker's pace is steadier than its heading, so a person's filter has less acceleration noise
+  // along its direction of travel than across it (docs/tracking.md "Session 38"). Not for what is
+  // pushed or carried: a box stops when the push does.
+  const double pace_accel_sigma_mps2 = class_name == "person" ? config_.pace_accel_sigma_mps2 : 0.0;
   return {config_.accel_sigma_mps2, config_.position_sigma_m, config_.velocity_sigma_mps,
-          kInitialVelocitySigmaMps, config_.pace_accel_sigma_mps2};
+          kInitialVelocitySigmaMps, pace_accel_sigma_mps2};
 }
 
 std::optional<Vec3> ObjectTracker::upWorld(const ObjectTrackerInput& input) const {
@@ -133,7 +137,7 @@ std::optional<ObjectTracker::Track> ObjectTracker::start(const Instance& instanc
   if (!centre) return std::nullopt;
   t.prior_dynamic = isPriorDynamicClass(instance.class_name, prior_dynamic_classes_);
   const Vec3 p_world = input.T_world_camera * centre->p_camera;
-  t.filter = KalmanCv(p_world, filterNoise(), centre->cov_world);
+  t.filter = KalmanCv(p_world, filterNoise(t.class_name), centre->cov_world);
   t.centre_rule = centreRule(t, true, centre->scale_sigma > 0.0);
   t.ranged_scale_sigma = centre->scale_sigma;
   const bool moving = input.dynamics.foundMoving(instance.id);

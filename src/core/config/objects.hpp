@@ -163,8 +163,8 @@ struct ObjectTrackingConfig {
       "clear, in every direction before)",
       Range{0, 100, Range::kOpenLow});
     v("pace_accel_sigma_mps2", pace_accel_sigma_mps2,
-      "Kalman filter: unmodelled acceleration along a clear direction of travel (m/s^2; a walker's "
-      "pace is steadier than its heading); 0: as accel_sigma_mps2",
+      "Kalman filter: a person's unmodelled acceleration along a clear direction of travel "
+      "(m/s^2; a walker's pace is steadier than its heading); 0: as accel_sigma_mps2",
       Range{0, 100});
     v("position_sigma_m", position_sigma_m, "Kalman filter: noise of the measured centre (m)",
       Range{0, 10, Range::kOpenLow});
