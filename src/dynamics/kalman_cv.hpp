@@ -3,9 +3,9 @@
 // (m, m/s), white-noise acceleration of spectral density accel_sigma^2 (the discretised
 // process noise of Bar-Shalom, "Estimation with Applications to Tracking", §6.3.2); once the
 // direction of travel is clear, pace_accel_sigma^2 along it (people change their pace less
-// readily than their heading). Measurements are the centre (from the object's points)
-// and, when the rigid motion was estimated, the centroid velocity; both enter in one update with
-// their own noise.
+// readily than their heading). Measurements are the centre (from the object's points) and, when
+// the rigid motion was estimated, the centroid velocity; both enter in one update with their own
+// noise.
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
