@@ -76,9 +76,14 @@ void ObjectTracker::judgeStill(Track& track, const Instance* instance,
   // And only from a walk clearly faster than "slow" (twice static_speed_mps): a dawdler's points
   // read slow now and then without a stop (Bonn crowd: a walker filtered at 0.33 m/s, its centre
   // moving on at that pace, was held still for 8 frames). Once held, slow points keep it held.
+  // And a stop is read only on a mask the segmenter found: points carried on without one may have
+  // slid onto the background, which reads slow (Bonn crowd: a walker leaving the view, missed, was
+  // held still on 16 carried points, and its velocity stayed unknown for the rest of its track).
+  // They do keep one already held.
   const bool points_slow = v_walk && isSlow(*v_walk);
   const double filtered_mps = track.filter.velocity().norm();
   const bool stops = track.prior_dynamic && config_.stop_after_slow_frames > 0 && points_slow &&
+                     (instance != nullptr || track.stationary) &&
                      track.points_slow + 1 >= config_.stop_after_slow_frames &&
                      track.points_agree >= config_.static_after_frames &&
                      (track.stationary || filtered_mps >= 2.0 * config_.static_speed_mps);
