@@ -23,27 +23,30 @@ KalmanCv::Mat6 KalmanCv::transition(double dt_s) const {
   return F;
 }
 
-KalmanCv::Mat6 KalmanCv::processNoise(double dt_s) const {
-  // The acceleration's covariance: isotropic until the direction of travel is clear, then split
-  // along and across it. A walker's pace is steadier than its heading: one noise low enough to
-  // hold a straight walk's speed steady lets a turning walker's velocity cut the corner (its
-  // length sags), and one wide enough for the turn shakes the straight walks' speed (simulated
-  // crossing and office, docs/tracking.md "Session 38").
+Mat3 KalmanCv::accelerationCovariance() const {
+  // Isotropic until the direction of travel is clear, then split along and across it. A walker's
+  // pace is steadier than its heading: one noise low enough to hold a straight walk's speed steady
+  // lets a turning walker's velocity cut the corner (its length sags), and one wide enough for the
+  // turn shakes the straight walks' speed (simulated crossing and office, docs/tracking.md
+  // "Session 38").
   const double q = noise_.accel_sigma_mps2 * noise_.accel_sigma_mps2;
-  Mat3 A = Mat3::Identity() * q;
   if (noise_.pace_accel_sigma_mps2 > 0.0) {
     if (const std::optional<Vec3> along = clearDirection(velocity())) {
       const double q_along = noise_.pace_accel_sigma_mps2 * noise_.pace_accel_sigma_mps2;
       const Mat3 T = *along * along->transpose();
-      A = T * q_along + (Mat3::Identity() - T) * q;
+      return T * q_along + (Mat3::Identity() - T) * q;
     }
   }
+  return Mat3::Identity() * q;
+}
+
+KalmanCv::Mat6 KalmanCv::processNoise(double dt_s, const Mat3& accel_cov) {
   const double dt2 = dt_s * dt_s, dt3 = dt2 * dt_s;
   Mat6 Q = Mat6::Zero();
-  Q.topLeftCorner<3, 3>() = A * dt3 / 3.0;
-  Q.topRightCorner<3, 3>() = A * dt2 / 2.0;
-  Q.bottomLeftCorner<3, 3>() = A * dt2 / 2.0;
-  Q.bottomRightCorner<3, 3>() = A * dt_s;
+  Q.topLeftCorner<3, 3>() = accel_cov * dt3 / 3.0;
+  Q.topRightCorner<3, 3>() = accel_cov * dt2 / 2.0;
+  Q.bottomLeftCorner<3, 3>() = accel_cov * dt2 / 2.0;
+  Q.bottomRightCorner<3, 3>() = accel_cov * dt_s;
   return Q;
 }
 
@@ -51,7 +54,7 @@ void KalmanCv::predict(double dt_s) {
   if (!(dt_s > 0.0)) return;
   const Mat6 F = transition(dt_s);
   x_ = F * x_;
-  P_ = F * P_ * F.transpose() + processNoise(dt_s);
+  P_ = F * P_ * F.transpose() + processNoise(dt_s, accelerationCovariance());
 }
 
 KalmanCv::Innovation KalmanCv::innovation(Eigen::MatrixXd H, const Eigen::VectorXd& z,
@@ -193,9 +196,10 @@ double KalmanCv::velocitySigma() const {
 std::vector<PathPoint> KalmanCv::predictPath(double horizon_s, double step_s) const {
   std::vector<PathPoint> path;
   if (!(step_s > 0.0)) return path;
+  const Mat3 accel_cov = accelerationCovariance();  // one state: the same at every step
   for (double ahead = step_s; ahead <= horizon_s + 1e-9; ahead += step_s) {
     const Mat6 F = transition(ahead);
-    const Mat6 P = F * P_ * F.transpose() + processNoise(ahead);
+    const Mat6 P = F * P_ * F.transpose() + processNoise(ahead, accel_cov);
     const Mat3 Pp = P.topLeftCorner<3, 3>();
     const double lambda =
         Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (Pp + Pp.transpose())).eigenvalues().maxCoeff();

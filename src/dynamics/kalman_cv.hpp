@@ -91,7 +91,11 @@ class KalmanCv {
 
  private:
   [[nodiscard]] Mat6 transition(double dt_s) const;
-  [[nodiscard]] Mat6 processNoise(double dt_s) const;
+  /// The white-noise acceleration's covariance (spectral density) at the current state: isotropic,
+  /// or split along and across a clear direction of travel.
+  [[nodiscard]] Mat3 accelerationCovariance() const;
+  /// The discretised process noise over dt_s for that acceleration covariance.
+  [[nodiscard]] static Mat6 processNoise(double dt_s, const Mat3& accel_cov);
   /// A linear measurement z = H x + noise (R), and its innovation against the current state.
   struct Innovation {
     Eigen::MatrixXd H, R;
