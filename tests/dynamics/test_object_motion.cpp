@@ -357,6 +357,11 @@ TEST(KalmanCv, ASteadierPaceThanHeadingReadsStraightWalksAndTurnsBetter) {
   const auto [straight_wide, turn_wide] = walkAndTurn(wide);
   const auto [straight_low, turn_low] = walkAndTurn(low);
   const auto [straight_split, turn_split] = walkAndTurn(split);
+  // The speed RMS errors, straight / turn, in the test's XML (--gtest_output=xml:FILE).
+  for (const auto& [name, rms] : {std::pair{"wide", std::pair{straight_wide, turn_wide}},
+                                  std::pair{"low", std::pair{straight_low, turn_low}},
+                                  std::pair{"split", std::pair{straight_split, turn_split}}})
+    RecordProperty(name, std::to_string(rms.first) + " / " + std::to_string(rms.second));
   EXPECT_LT(straight_split, 0.9 * straight_wide) << straight_wide;
   EXPECT_LT(straight_split, straight_low + 0.005) << straight_low;
   EXPECT_LT(turn_split, 0.9 * turn_low) << turn_low;
