@@ -4,6 +4,8 @@
 #include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
 
+#include "slam/observation_noise.hpp"
+
 namespace dynanav {
 namespace {
 
@@ -15,8 +17,8 @@ constexpr double kChi2Stereo = 7.815;
 /// `readout_s` (nullptr: not estimated) adds the shear a readout other than the one the keypoint
 /// was re-timed with predicts (BaObservation::readout_px_per_s).
 template <class T>
-void weightedResidual(const BaObservation& obs, const PoseCamera& cam, double weight, const T* pose,
-                      const T* point, const T* readout_s, T* residual) {
+void weightedResidual(const BaObservation& obs, const PoseCamera& cam, const Eigen::Matrix3d& W,
+                      const T* pose, const T* point, const T* readout_s, T* residual) {
   const T* q = pose;
   const T* t = pose + 4;
   T p[3];
@@ -34,14 +36,19 @@ void weightedResidual(const BaObservation& obs, const PoseCamera& cam, double we
     v += readout_error_s * T(obs.readout_px_per_s.y());
     u_right += readout_error_s * T(obs.readout_px_per_s.z());
   }
-  residual[0] = T(weight) * (T(obs.u) - u);
-  residual[1] = T(weight) * (T(obs.v) - v);
-  if (obs.u_right >= 0.0) residual[2] = T(weight) * (T(obs.u_right) - u_right);
+  const T r[3] = {T(obs.u) - u, T(obs.v) - v,
+                  obs.u_right >= 0.0 ? T(obs.u_right) - u_right : T(0.0)};
+  const int dims = obs.u_right >= 0.0 ? 3 : 2;
+  for (int k = 0; k < dims; ++k)
+    residual[k] = T(W(k, 0)) * r[0] + T(W(k, 1)) * r[1] + T(W(k, 2)) * r[2];
 }
 
 struct BaCost {
   explicit BaCost(const BaObservation& obs, const PoseCamera& cam)
-      : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
+      : obs_(obs),
+        cam_(cam),
+        weight_(measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {
+  }
   template <class T>
   bool operator()(const T* pose, const T* point, T* residual) const {
     weightedResidual<T>(obs_, cam_, weight_, pose, point, nullptr, residual);
@@ -49,12 +56,15 @@ struct BaCost {
   }
   BaObservation obs_;
   PoseCamera cam_;
-  double weight_;
+  Eigen::Matrix3d weight_;
 };
 
 struct BaReadoutCost {
   explicit BaReadoutCost(const BaObservation& obs, const PoseCamera& cam)
-      : obs_(obs), cam_(cam), weight_(std::sqrt(obs.inv_sigma2)) {}
+      : obs_(obs),
+        cam_(cam),
+        weight_(measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {
+  }
   template <class T>
   bool operator()(const T* pose, const T* point, const T* readout_s, T* residual) const {
     weightedResidual<T>(obs_, cam_, weight_, pose, point, readout_s, residual);
@@ -62,7 +72,7 @@ struct BaReadoutCost {
   }
   BaObservation obs_;
   PoseCamera cam_;
-  double weight_;
+  Eigen::Matrix3d weight_;
 };
 
 template <int kResiduals>
@@ -108,12 +118,11 @@ ObservationError evaluate(const BaProblem& problem, const BaObservation& obs) {
   const double eu = obs.u - (u + shear_px.x());
   const double ev = obs.v - (cam.fy * p.y() * inv_z + cam.cy + shear_px.y());
   const double pixel2 = eu * eu + ev * ev;
-  double e2 = pixel2;
-  if (obs.u_right >= 0.0) {
-    const double er = obs.u_right - (u - cam.bf * inv_z + shear_px.z());
-    e2 += er * er;
-  }
-  return {e2 * obs.inv_sigma2, pixel2, true};
+  const Vec3 r(eu, ev,
+               obs.u_right >= 0.0 ? obs.u_right - (u - cam.bf * inv_z + shear_px.z()) : 0.0);
+  const Eigen::Matrix3d W =
+      measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0);
+  return {(W * r).squaredNorm(), pixel2, true};
 }
 
 std::vector<uint8_t> classify(const BaProblem& problem) {

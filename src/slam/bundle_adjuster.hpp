@@ -30,6 +30,8 @@ struct BaObservation {
   int point = 0;     ///< index into BaProblem::points
   int keypoint = 0;  ///< keypoint index in that keyframe (for writing results back)
   double u = 0.0, v = 0.0, u_right = -1.0, inv_sigma2 = 1.0;
+  /// The motion blur's spread along the keypoint's streak (slam/observation_noise.hpp).
+  Eigen::Vector2d blur_sigma_px = Eigen::Vector2d::Zero();
   /// Issue 18, a readout estimated jointly (BaProblem::estimate_readout): the keypoint was re-timed
   /// to its image's middle row with `readout_used_s`; a true readout R moves where the re-timed
   /// keypoint should be seen by (R - readout_used_s) * readout_px_per_s in (u, v, u_right): its

@@ -21,15 +21,20 @@ struct Features {
   cv::Mat descriptors;                  ///< N x 32 CV_8U
   std::vector<uint8_t> usable;          ///< 1 = may be used for tracking/mapping (static)
   std::vector<uint16_t> instance_id;    ///< 0 = background
+  /// Spread of each keypoint's position along its motion-blur streak (px, a standard deviation as
+  /// a vector along the streak); empty when not known (slam/rolling_shutter.hpp:
+  /// measureMotionBlur, slam/observation_noise.hpp).
+  std::vector<cv::Point2f> blur_sigma_px;
   FeatureGrid grid;
-  cv::Rect2d bounds;                    ///< undistorted image area (ORB-SLAM2 mnMinX..mnMaxY)
+  cv::Rect2d bounds;  ///< undistorted image area (ORB-SLAM2 mnMinX..mnMaxY)
   std::shared_ptr<const PinholeCamera> camera;
   std::shared_ptr<const PyramidScales> scales;
 
   [[nodiscard]] int size() const { return static_cast<int>(keypoints.size()); }
   [[nodiscard]] bool hasDepth(int i) const { return depth_m[i] > 0.f; }
   [[nodiscard]] bool inBounds(double u, double v) const {
-    return u >= bounds.x && u <= bounds.x + bounds.width && v >= bounds.y && v <= bounds.y + bounds.height;
+    return u >= bounds.x && u <= bounds.x + bounds.width && v >= bounds.y &&
+           v <= bounds.y + bounds.height;
   }
   /// Point in the camera frame from keypoint i's undistorted pixel and depth (needs depth).
   [[nodiscard]] Vec3 backproject(int i) const {

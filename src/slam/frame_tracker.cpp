@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "slam/matcher.hpp"
+#include "slam/observation_noise.hpp"
 #include "slam/persistent_pose.hpp"
 #include "slam/pose_optimizer.hpp"
 
@@ -16,6 +17,7 @@ PoseObservation poseObservation(const Frame& frame, int keypoint) {
   obs.v = f.points[keypoint].y;
   obs.u_right = f.u_right[keypoint];
   obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[keypoint].octave];
+  obs.blur_sigma_px = blurSigmaPx(f, keypoint);
   return obs;
 }
 

@@ -1,5 +1,7 @@
 #include "slam/local_ba.hpp"
 
+#include "slam/observation_noise.hpp"
+
 namespace dynanav {
 
 namespace {
@@ -7,7 +9,8 @@ namespace {
 /// Observations of the indexed points in the indexed keyframes.
 void addObservations(BaProblem& problem, const LocalBaIndex& index) {
   std::map<const KeyFrame*, int> slot;
-  for (size_t k = 0; k < index.keyframes.size(); ++k) slot[index.keyframes[k]] = static_cast<int>(k);
+  for (size_t k = 0; k < index.keyframes.size(); ++k)
+    slot[index.keyframes[k]] = static_cast<int>(k);
   problem.points.reserve(index.points.size());
   for (size_t j = 0; j < index.points.size(); ++j) {
     const MapPointPtr& p = index.points[j];
@@ -15,7 +18,8 @@ void addObservations(BaProblem& problem, const LocalBaIndex& index) {
     for (const auto& [kf, i] : p->observations) {
       const auto it = slot.find(kf);
       if (it == slot.end()) continue;
-      problem.observations.push_back(baObservation(kf->features, i, it->second, static_cast<int>(j)));
+      problem.observations.push_back(
+          baObservation(kf->features, i, it->second, static_cast<int>(j)));
     }
   }
 }
@@ -31,6 +35,7 @@ BaObservation baObservation(const Features& f, int keypoint, int keyframe_slot, 
   obs.v = f.points[keypoint].y;
   obs.u_right = f.u_right[keypoint];
   obs.inv_sigma2 = f.scales->inv_sigma2[f.keypoints[keypoint].octave];
+  obs.blur_sigma_px = blurSigmaPx(f, keypoint);
   return obs;
 }
 
@@ -88,7 +93,8 @@ void applyLocalBa(const BaProblem& problem, const BaResult& result, const LocalB
     const MapPointPtr& p = index.points[j];
     if (p->bad) continue;
     p->p_world = problem.points[j].p_world;
-    if (!p->observations.empty()) p->updateNormalAndDepth(*p->observations.begin()->first->features.scales);
+    if (!p->observations.empty())
+      p->updateNormalAndDepth(*p->observations.begin()->first->features.scales);
   }
 }
 

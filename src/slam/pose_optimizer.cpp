@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "slam/observation_noise.hpp"
 #include "slam/rgbd_jacobian.hpp"
 
 namespace dynanav {
@@ -56,7 +57,7 @@ class PoseResiduals {
       item.u = obs.u;
       item.v = obs.v;
       item.u_right = obs.u_right;
-      item.weight = std::sqrt(obs.inv_sigma2);
+      item.sqrt_information = sqrtInformation(obs);
       item.row = num_residuals_;
       num_residuals_ += obs.u_right >= 0.0 ? 3 : 2;
       items_.push_back(item);
@@ -89,8 +90,8 @@ class PoseResiduals {
       const double u = camera_.fx * p.x() * inv_z + camera_.cx;
       const double v = camera_.fy * p.y() * inv_z + camera_.cy;
       const bool stereo = item.u_right >= 0.0;
-      double e[3] = {item.weight * (item.u - u), item.weight * (item.v - v), 0.0};
-      if (stereo) e[2] = item.weight * (item.u_right - (u - camera_.bf * inv_z));
+      const Vec3 r(item.u - u, item.v - v, stereo ? item.u_right - (u - camera_.bf * inv_z) : 0.0);
+      const Vec3 e = item.sqrt_information * r;
       const int dims = stereo ? 3 : 2;
       const double scale = robust_ ? huberScale(e[0] * e[0] + e[1] * e[1] + e[2] * e[2],
                                                 std::sqrt(stereo ? kChi2Stereo : kChi2Mono))
@@ -102,7 +103,7 @@ class PoseResiduals {
       Eigen::Matrix<double, 3, 6> dp;
       dp.leftCols<3>() = -skewSymmetric(p);
       dp.rightCols<3>().setIdentity();
-      const Eigen::Matrix<double, 3, 6> J = (-item.weight * scale) * dproj * dp;
+      const Eigen::Matrix<double, 3, 6> J = -scale * item.sqrt_information * dproj * dp;
       for (int k = 0; k < dims; ++k)
         for (int c = 0; c < 6; ++c) jacobian[c * rows + item.row + k] = J(k, c);
     }
@@ -129,7 +130,8 @@ class PoseResiduals {
  private:
   struct Item {
     Vec3 p0;
-    double u, v, u_right, weight;
+    double u, v, u_right;
+    Eigen::Matrix3d sqrt_information;
     int row;
   };
   PoseCamera camera_;
@@ -156,19 +158,18 @@ SE3 applyDelta(const Eigen::Matrix<double, 6, 1>& delta, const SE3& T0) {
 
 }  // namespace
 
+Eigen::Matrix3d sqrtInformation(const PoseObservation& obs) {
+  return measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0);
+}
+
 double reprojectionChi2(const PoseObservation& obs, const PoseCamera& cam, const SE3& T_cw) {
   const Vec3 p = T_cw * obs.p_world;
   if (p.z() <= 0.0) return std::numeric_limits<double>::infinity();
   const double inv_z = 1.0 / p.z();
   const double u = cam.fx * p.x() * inv_z + cam.cx;
-  const double eu = obs.u - u;
-  const double ev = obs.v - (cam.fy * p.y() * inv_z + cam.cy);
-  double e2 = eu * eu + ev * ev;
-  if (obs.u_right >= 0.0) {
-    const double er = obs.u_right - (u - cam.bf * inv_z);
-    e2 += er * er;
-  }
-  return e2 * obs.inv_sigma2;
+  const Vec3 r(obs.u - u, obs.v - (cam.fy * p.y() * inv_z + cam.cy),
+               obs.u_right >= 0.0 ? obs.u_right - (u - cam.bf * inv_z) : 0.0);
+  return (sqrtInformation(obs) * r).squaredNorm();
 }
 
 namespace {

@@ -24,7 +24,16 @@ struct PoseObservation {
   double u = 0.0, v = 0.0;
   double u_right = -1.0;  ///< < 0: no depth (monocular residual)
   double inv_sigma2 = 1.0;
+  /// Spread of the keypoint's position along its motion-blur streak (px, a standard deviation
+  /// as a vector along the streak; zero: no blur). It adds to the level's variance along the
+  /// streak only: a blurred corner is found somewhere along it, but across it as sharply as ever.
+  Eigen::Vector2d blur_sigma_px = Eigen::Vector2d::Zero();
 };
+
+/// The whitening of an observation's residual (u, v, u_right): the inverse square root of its
+/// covariance, the level's isotropic variance plus the blur's along the streak (u_right moves with
+/// u). Its third row and column are unused without depth.
+Eigen::Matrix3d sqrtInformation(const PoseObservation& obs);
 
 struct PoseCamera {
   double fx, fy, cx, cy, bf;

@@ -47,4 +47,11 @@ struct KeypointMeasurements {
 /// (rotation only). Rebuilds the feature grid. No-op for readout_s <= 0 or interval_s <= 0.
 void compensateRollingShutter(Features& f, const CameraVelocity& velocity, double readout_s);
 
+/// Each keypoint's motion blur: its streak is where the camera's motion carries its point over an
+/// exposure of `exposure_s` centred on the keypoint's own time (end minus start, undistorted px),
+/// and f.blur_sigma_px gets `share` of it. Keypoints without depth are treated as far away
+/// (rotation only). Clears f.blur_sigma_px for exposure_s <= 0, share <= 0 or interval_s <= 0.
+void measureMotionBlur(Features& f, const CameraVelocity& velocity, double exposure_s,
+                       double share);
+
 }  // namespace dynanav

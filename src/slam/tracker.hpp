@@ -37,6 +37,8 @@ struct InitialPose {
   bool was_lost = false;
   bool retime = false;  ///< keypoints were re-timed for the rolling shutter with the prediction
   double readout_s = 0.0;
+  bool blur = false;  ///< keypoints' motion blur was measured with the prediction
+  double exposure_s = 0.0;
   /// The keypoints before re-timing (to re-time with own motion, and for the readout estimate).
   KeypointMeasurements as_read;
   /// The camera's motion from the last frame to this initial pose (interval 0: not known, e.g.
@@ -83,10 +85,10 @@ class Tracker {
   /// `frame`'s pose fits (slam/depth_surface.hpp).
   void placeReferenceDepth(Frame& frame) const;
   void rememberAsLast(const Frame& frame);
-  /// Re-times the frame's keypoints (from `as_read`) with its own motion since the last frame
-  /// and re-optimises its pose; returns the local-map inliers left.
-  int retimeWithOwnMotion(Frame& frame, const KeypointMeasurements& as_read,
-                          double readout_s) const;
+  /// Re-times the frame's keypoints (from `as_read`) and measures their motion blur with its own
+  /// motion since the last frame (as `initial` asks), and re-optimises its pose; returns the
+  /// local-map inliers left.
+  int refineWithOwnMotion(Frame& frame, const InitialPose& initial) const;
   /// The readout to re-time this frame with: the configured or camera's value, or the latest
   /// estimate bundle adjustment adopted (tracking.rolling_shutter_online). Call with the map
   /// locked.

@@ -26,7 +26,8 @@ Synthetic makeWindow(uint32_t seed) {
   Synthetic s;
   s.truth.camera = kCamera;
   for (int k = 0; k < 6; ++k) {
-    const SE3 T_wc = makeSE3(Quat(Eigen::AngleAxisd(0.04 * k, Vec3::UnitY())), Vec3(0.08 * k, 0.01 * k, 0.0));
+    const SE3 T_wc =
+        makeSE3(Quat(Eigen::AngleAxisd(0.04 * k, Vec3::UnitY())), Vec3(0.08 * k, 0.01 * k, 0.0));
     s.truth.keyframes.push_back({static_cast<uint64_t>(k), T_wc.inverse(), k < 2});
   }
   for (int j = 0; j < 300; ++j) {
@@ -53,7 +54,8 @@ Synthetic makeWindow(uint32_t seed) {
     for (int i = 0; i < 6; ++i) xi(i) = pose_noise(rng);
     kf.T_camera_world = leftPerturb(xi, kf.T_camera_world);
   }
-  for (auto& p : s.noisy.points) p.p_world += Vec3(point_noise(rng), point_noise(rng), point_noise(rng));
+  for (auto& p : s.noisy.points)
+    p.p_world += Vec3(point_noise(rng), point_noise(rng), point_noise(rng));
   return s;
 }
 
@@ -69,10 +71,13 @@ TEST(BundleAdjuster, ReducesReprojectionErrorAndKeepsFixedKeyframes) {
     for (size_t k = 0; k < problem.keyframes.size(); ++k) {
       const SE3& T = problem.keyframes[k].T_camera_world;
       if (problem.keyframes[k].fixed) {
-        EXPECT_TRUE(T.isApprox(s.noisy.keyframes[k].T_camera_world, 0.0)) << "fixed keyframe " << k << " moved";
+        EXPECT_TRUE(T.isApprox(s.noisy.keyframes[k].T_camera_world, 0.0))
+            << "fixed keyframe " << k << " moved";
       } else {
         // The free poses return close to the truth (the fixed ones pin the gauge).
-        EXPECT_LT((T.translation() - s.truth.keyframes[k].T_camera_world.translation()).norm(), 0.01) << k;
+        EXPECT_LT((T.translation() - s.truth.keyframes[k].T_camera_world.translation()).norm(),
+                  0.01)
+            << k;
       }
     }
   }
@@ -91,6 +96,43 @@ TEST(BundleAdjuster, FlagsGrossOutliers) {
   size_t flagged = 0;
   for (const auto o : result.outlier) flagged += o;
   EXPECT_LT(flagged, corrupted.size() + problem.observations.size() / 20);
+}
+
+TEST(BundleAdjuster, AnObservationOffAlongItsBlurStreakIsNoOutlier) {
+  for (const bool model_blur : {false, true}) {
+    Synthetic s = makeWindow(9);
+    BaProblem problem = s.noisy;
+    std::vector<size_t> smeared;
+    for (size_t i = 0; i < problem.observations.size(); i += 37) {
+      BaObservation& obs = problem.observations[i];
+      obs.u += 6.0;  // found 6 px along a sideways streak
+      if (obs.u_right >= 0.0) obs.u_right += 6.0;
+      if (model_blur) obs.blur_sigma_px = Eigen::Vector2d(4.0, 0.0);
+      smeared.push_back(i);
+    }
+    const BaResult result = bundleAdjust(problem, BaOptions{});
+    size_t flagged = 0;
+    for (const size_t i : smeared) flagged += result.outlier[i];
+    if (model_blur) {
+      EXPECT_EQ(flagged, 0u) << "the streak's spread (4 px) covers 6 px along it";
+    } else {
+      EXPECT_EQ(flagged, smeared.size()) << "6 px is far beyond a sharp keypoint's 1 px";
+    }
+  }
+}
+
+TEST(BundleAdjuster, AnObservationOffAcrossItsBlurStreakIsStillAnOutlier) {
+  Synthetic s = makeWindow(9);
+  BaProblem problem = s.noisy;
+  std::vector<size_t> off;
+  for (size_t i = 0; i < problem.observations.size(); i += 37) {
+    BaObservation& obs = problem.observations[i];
+    obs.v += 6.0;  // across a sideways streak
+    obs.blur_sigma_px = Eigen::Vector2d(4.0, 0.0);
+    off.push_back(i);
+  }
+  const BaResult result = bundleAdjust(problem, BaOptions{});
+  for (const size_t i : off) EXPECT_TRUE(result.outlier[i]) << "observation " << i;
 }
 
 }  // namespace

@@ -117,5 +117,60 @@ TEST(RollingShutter, RestoringMeasurementsUndoesARetiming) {
   EXPECT_EQ(s.features.depth_m, as_read.depth_m);
 }
 
+// Motion blur (slam/observation_noise.hpp): a keypoint's streak over the exposure.
+constexpr double kExposure = 0.010;
+constexpr double kShare = 0.29;
+
+TEST(MotionBlur, AYawTurnSmearsEveryKeypointSidewaysByItsTravelOverTheExposure) {
+  // 2 degrees per frame (60 deg/s): over 10 ms the view turns by 0.3 of that.
+  const CameraVelocity velocity = makeVelocity(Vec3(0.0, 0.035, 0.0), Vec3::Zero());
+  Scene s = makeScene(velocity);
+  measureMotionBlur(s.features, velocity, kExposure, kShare);
+  ASSERT_EQ(s.features.blur_sigma_px.size(), size_t(s.features.size()));
+  const PinholeCamera& camera = *s.features.camera;
+  const double streak_px = camera.fx * 0.035 * kExposure / testing::kFrameInterval;  // ~5.5 px
+  for (int i = 0; i < s.features.size(); ++i) {
+    const cv::Point2f& sigma = s.features.blur_sigma_px[size_t(i)];
+    // Near the image's centre a yaw moves every point alike, near or far (with depth or without);
+    // towards the sides the projection stretches the streak.
+    EXPECT_GE(std::abs(sigma.x), 0.99 * kShare * streak_px) << "keypoint " << i;
+    EXPECT_LE(std::abs(sigma.x), 1.6 * kShare * streak_px) << "keypoint " << i;
+    EXPECT_LT(std::abs(sigma.y), 0.5 * std::abs(sigma.x)) << "keypoint " << i;
+  }
+}
+
+TEST(MotionBlur, ASidestepSmearsNearPointsMoreThanFarOnes) {
+  const CameraVelocity velocity = makeVelocity(Vec3::Zero(), Vec3(0.03, 0.0, 0.0));
+  Scene s = makeScene(velocity);
+  measureMotionBlur(s.features, velocity, kExposure, kShare);
+  const PinholeCamera& camera = *s.features.camera;
+  for (int i = 0; i < s.features.size(); ++i) {
+    const cv::Point2f& sigma = s.features.blur_sigma_px[size_t(i)];
+    if (!s.features.hasDepth(i)) {
+      EXPECT_EQ(sigma, cv::Point2f(0.f, 0.f)) << "a far point does not move";
+      continue;
+    }
+    // 3 cm per frame, 0.9 cm over the exposure: fx * 0.009 / z.
+    const double expected =
+        kShare * camera.fx * 0.03 * kExposure / testing::kFrameInterval / s.features.depth_m[i];
+    EXPECT_NEAR(std::abs(sigma.x), expected, 0.01 * expected) << "keypoint " << i;
+  }
+}
+
+TEST(MotionBlur, NoExposureNoShareOrUnknownMotionMeasuresNothing) {
+  const CameraVelocity velocity = makeVelocity(Vec3(0.0, 0.035, 0.0), Vec3::Zero());
+  Scene s = makeScene(velocity);
+  measureMotionBlur(s.features, velocity, kExposure, kShare);
+  ASSERT_FALSE(s.features.blur_sigma_px.empty());
+  measureMotionBlur(s.features, velocity, 0.0, kShare);
+  EXPECT_TRUE(s.features.blur_sigma_px.empty());
+  measureMotionBlur(s.features, velocity, kExposure, 0.0);
+  EXPECT_TRUE(s.features.blur_sigma_px.empty());
+  CameraVelocity no_interval = velocity;
+  no_interval.interval_s = 0.0;
+  measureMotionBlur(s.features, no_interval, kExposure, kShare);
+  EXPECT_TRUE(s.features.blur_sigma_px.empty());
+}
+
 }  // namespace
 }  // namespace dynanav

@@ -35,6 +35,10 @@ struct TrackingConfig {
   double rolling_shutter_readout_ms = -1.0;
   bool rolling_shutter_online = false;
   double rolling_shutter_online_max_sigma_ms = 1.0;
+  // slam/observation_noise: a keypoint blurred over the exposure is found somewhere along its
+  // streak; uniformly anywhere on it, the standard deviation is 1/sqrt(12) ~ 0.29 of its length.
+  double exposure_ms = -1.0;
+  double motion_blur_share = 0.29;
   // slam/persistent_pose: a walker's points do not stay matched for seconds under a pose held
   // by the static structure; what has stayed put that long is the static structure.
   double persistent_point_age_s = 2.0;
@@ -93,6 +97,15 @@ struct TrackingConfig {
       "estimate the readout in local bundle adjustment, with the map, starting from "
       "rolling_shutter_readout_ms, and re-time keypoints with each well-determined estimate "
       "(stats.json rolling_shutter.online_stages)");
+    v("exposure_ms", exposure_ms,
+      "colour camera's exposure time (ms) for the motion blur of keypoints; -1 = the camera's "
+      "own (camera.yaml exposure_ms; none known: no blur is modelled), 0 = no blur",
+      Range{-1, 1000});
+    v("motion_blur_share", motion_blur_share,
+      "while the camera moves, a keypoint's position is uncertain along its blur streak (its "
+      "motion over the exposure) by this share of the streak's length, as a standard deviation "
+      "added to its pyramid level's, in tracking and bundle adjustment; 0 = off",
+      Range{0, 10});
     v("persistent_point_age_s", persistent_point_age_s,
       "with dynamics on, a frame's pose is found on matches to map points mapped at least this "
       "long ago (s) when there are persistent_min_matches of them, and the other matches are "
