@@ -26,8 +26,9 @@ Eigen::Vector2d medianNormalised(const std::vector<int>& keypoints,
                                  const std::vector<MapResidual>& residuals) {
   std::vector<double> u, v;
   for (const int i : keypoints) {
-    u.push_back(residuals[i].du_px / residuals[i].sigma_px);
-    v.push_back(residuals[i].dv_px / residuals[i].sigma_px);
+    const Eigen::Vector2d n = residuals[i].normalised();
+    u.push_back(n.x());
+    v.push_back(n.y());
   }
   return {medianInPlace(u), medianInPlace(v)};
 }
@@ -82,8 +83,7 @@ ResidualMovers findResidualMovers(const Frame& frame, const std::vector<MapResid
     const Eigen::Vector2d offset =
         othersOffset(young, region, residuals, config.residual_region_min_points);
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();  // in units of each keypoint's sigma
-    for (const int i : region)
-      mean += Eigen::Vector2d(residuals[i].du_px, residuals[i].dv_px) / residuals[i].sigma_px;
+    for (const int i : region) mean += residuals[i].normalised();
     mean = mean / count - offset;
     if (count * mean.squaredNorm() <= config.residual_region_chi2) continue;
     if (mean.norm() < config.residual_region_min_px) continue;

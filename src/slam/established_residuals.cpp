@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "slam/frame_tracker.hpp"
+#include "slam/observation_noise.hpp"
 
 namespace dynanav {
 
@@ -53,6 +54,13 @@ std::vector<MapResidual> residualsUnderPoseOver(const Frame& frame, const Tracki
     out.du_px = static_cast<float>(r.x());
     out.dv_px = static_cast<float>(r.y());
     out.sigma_px = std::sqrt(f.scales->sigma2[f.keypoints[i].octave]);
+    const Eigen::Vector2d blur = blurSigmaPx(f, i);
+    out.blurred = !blur.isZero();
+    if (out.blurred) {
+      const Eigen::Matrix3d W =
+          measurementSqrtInformation(f.scales->inv_sigma2[f.keypoints[i].octave], blur, false);
+      out.whitened = (W.topLeftCorner<2, 2>() * r).cast<float>();
+    }
   }
   return residuals;
 }

@@ -23,6 +23,16 @@ struct MapResidual {
   float du_px = 0.f;     ///< measured minus projected pixel, undistorted (x)
   float dv_px = 0.f;     ///< (y)
   float sigma_px = 1.f;  ///< the keypoint's pyramid level's pixel sigma
+  /// The keypoint was blurred (slam/observation_noise.hpp): `whitened` is its residual in units of
+  /// its noise, the level's sigma across its streak and more along it.
+  bool blurred = false;
+  Eigen::Vector2f whitened = Eigen::Vector2f::Zero();
+
+  /// The residual in units of its noise: (du, dv) / sigma, or `whitened` for a blurred keypoint.
+  [[nodiscard]] Eigen::Vector2d normalised() const {
+    return blurred ? Eigen::Vector2d(whitened.cast<double>())
+                   : Eigen::Vector2d(du_px / sigma_px, dv_px / sigma_px);
+  }
 };
 
 /// Per keypoint of `frame`: its residual under the frame's pose refitted (from the frame's

@@ -6,6 +6,7 @@
 #include "dynamics/residual_movers.hpp"
 #include "slam/keyframe.hpp"
 #include "slam/keypoint_drop.hpp"
+#include "slam/observation_noise.hpp"
 #include "slam/pyramid.hpp"
 
 using namespace dynanav;
@@ -78,6 +79,31 @@ TEST(ResidualMovers, NoiseAndSmallCommonErrorsAreNotMotion) {
   EXPECT_TRUE(findResidualMovers(s.frame, s.residuals, c).keypoints.empty());
   // ...against which a patch off by 4 px more still moves.
   s = withPatch(10, {4.f, 0.f}, {3.f, 0.f});
+  EXPECT_EQ(findResidualMovers(s.frame, s.residuals, c).keypoints, patchIndices(10));
+}
+
+namespace {
+/// The patch's keypoints blurred along x by `blur_sigma_px` (a fast yaw; slam/observation_noise).
+void blurPatch(Scene& s, int patch, double blur_sigma_px) {
+  for (int k = 0; k < patch; ++k) {
+    MapResidual& r = s.residuals[size_t(60 + k)];
+    const Eigen::Matrix3d W =
+        measurementSqrtInformation(1.0, Eigen::Vector2d(blur_sigma_px, 0.0), false);
+    r.blurred = true;
+    r.whitened = (W.topLeftCorner<2, 2>() * Eigen::Vector2d(r.du_px, r.dv_px)).cast<float>();
+  }
+}
+}  // namespace
+
+TEST(ResidualMovers, AnOffsetAlongTheBlurStreakIsNotMotionButOneAcrossItIs) {
+  const DynamicsConfig c;
+  // 4 px along a streak whose spread is 4 px: about one sigma there.
+  Scene s = withPatch(10, {4.f, 0.f});
+  blurPatch(s, 10, 4.0);
+  EXPECT_TRUE(findResidualMovers(s.frame, s.residuals, c).keypoints.empty());
+  // 4 px across it counts as without blur.
+  s = withPatch(10, {0.f, 4.f});
+  blurPatch(s, 10, 4.0);
   EXPECT_EQ(findResidualMovers(s.frame, s.residuals, c).keypoints, patchIndices(10));
 }
 
