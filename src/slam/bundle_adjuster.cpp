@@ -47,32 +47,32 @@ struct BaCost {
   explicit BaCost(const BaObservation& obs, const PoseCamera& cam)
       : obs_(obs),
         cam_(cam),
-        weight_(measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {
-  }
+        sqrt_information_(
+            measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {}
   template <class T>
   bool operator()(const T* pose, const T* point, T* residual) const {
-    weightedResidual<T>(obs_, cam_, weight_, pose, point, nullptr, residual);
+    weightedResidual<T>(obs_, cam_, sqrt_information_, pose, point, nullptr, residual);
     return true;
   }
   BaObservation obs_;
   PoseCamera cam_;
-  Eigen::Matrix3d weight_;
+  Eigen::Matrix3d sqrt_information_;
 };
 
 struct BaReadoutCost {
   explicit BaReadoutCost(const BaObservation& obs, const PoseCamera& cam)
       : obs_(obs),
         cam_(cam),
-        weight_(measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {
-  }
+        sqrt_information_(
+            measurementSqrtInformation(obs.inv_sigma2, obs.blur_sigma_px, obs.u_right >= 0.0)) {}
   template <class T>
   bool operator()(const T* pose, const T* point, const T* readout_s, T* residual) const {
-    weightedResidual<T>(obs_, cam_, weight_, pose, point, readout_s, residual);
+    weightedResidual<T>(obs_, cam_, sqrt_information_, pose, point, readout_s, residual);
     return true;
   }
   BaObservation obs_;
   PoseCamera cam_;
-  Eigen::Matrix3d weight_;
+  Eigen::Matrix3d sqrt_information_;
 };
 
 template <int kResiduals>

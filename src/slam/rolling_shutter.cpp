@@ -41,16 +41,19 @@ void measureMotionBlur(Features& f, const CameraVelocity& velocity, double expos
   f.blur_sigma_px.clear();
   if (exposure_s <= 0.0 || share <= 0.0 || velocity.interval_s <= 0.0 || f.size() == 0) return;
   const PinholeCamera& camera = *f.camera;
-  // T_end_start maps the camera at the exposure's start to the one at its end; the keypoint's
-  // re-timing does not change it (first order, constant velocity).
+  // The camera at the exposure's start and end, relative to the keypoint's (re-timed) instant.
   const SE3 T_start_mid = motionOver(velocity, -0.5 * exposure_s);
   const SE3 T_end_mid = motionOver(velocity, 0.5 * exposure_s);
   f.blur_sigma_px.assign(f.points.size(), cv::Point2f(0.f, 0.f));
   for (int i = 0; i < f.size(); ++i) {
+    const bool with_depth = f.hasDepth(i);
     const Vec3 p_mid =
-        f.hasDepth(i) ? f.backproject(i) : camera.backproject(f.points[i].x, f.points[i].y, 1.0);
-    const Vec3 a = f.hasDepth(i) ? Vec3(T_start_mid * p_mid) : Vec3(T_start_mid.linear() * p_mid);
-    const Vec3 b = f.hasDepth(i) ? Vec3(T_end_mid * p_mid) : Vec3(T_end_mid.linear() * p_mid);
+        with_depth ? f.backproject(i) : camera.backproject(f.points[i].x, f.points[i].y, 1.0);
+    // Without depth the point is taken as far away: only the rotation moves it.
+    const auto seen_by = [&](const SE3& T) {
+      return with_depth ? Vec3(T * p_mid) : Vec3(T.linear() * p_mid);
+    };
+    const Vec3 a = seen_by(T_start_mid), b = seen_by(T_end_mid);
     if (a.z() <= 0.0 || b.z() <= 0.0) continue;
     const Eigen::Vector2d sigma = share * (camera.project(b) - camera.project(a));
     f.blur_sigma_px[size_t(i)] = cv::Point2f(float(sigma.x()), float(sigma.y()));
